@@ -11,7 +11,8 @@ function(particulate_add_test)
   cmake_parse_arguments(T "DEALII" "NAME;MPI;TIMEOUT"
     "SOURCES;LIBRARIES;LABELS;ARGS" ${ARGN})
   add_executable(${T_NAME} ${T_SOURCES})
-  target_link_libraries(${T_NAME} PRIVATE ${T_LIBRARIES})
+  # plain signature: deal_ii_setup_target() uses it too
+  target_link_libraries(${T_NAME} ${T_LIBRARIES})
   if(T_DEALII)
     deal_ii_setup_target(${T_NAME})
   endif()

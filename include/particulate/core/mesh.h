@@ -1,0 +1,63 @@
+#ifndef particulate_core_mesh_h
+#define particulate_core_mesh_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+
+#include <string>
+#include <vector>
+
+namespace particulate {
+  namespace core {
+    /** subsection `Mesh`: the coarse mesh and its refinement. */
+    struct MeshParameters
+    {
+      enum class Type
+      {
+        hyper_rectangle,
+        channel_with_cylinder,
+        file
+      };
+      Type                      type = Type::hyper_rectangle;
+      std::string               file_name;
+      unsigned int              refinements = 2;
+      std::vector<double>       lower_corner{0., 0., 0.};
+      std::vector<double>       upper_corner{1., 1., 1.};
+      std::vector<unsigned int> subdivisions{1, 1, 1};
+      double                    cylinder_shell_width = 0.03;
+      unsigned int              cylinder_shells      = 2;
+      double cylinder_center_x = 0.2; ///< [m], DFG 2D: 0.2, 3D-1Z: 0.5
+      double channel_length    = 2.2; ///< [m], DFG 2D: 2.2, 3D-1Z: 2.5
+      /// directory of the `.prm` file: relative mesh paths start there
+      std::string base_directory = ".";
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * Build the distributed mesh: every rank creates the coarse mesh
+     * (generated, or read from a Gmsh `.msh`, UCD `.inp`/`.ucd` or Abaqus
+     * `.inp` file), refines it globally, and takes its part of a partition
+     * into a parallel::fullydistributed::Triangulation (no p4est). Curved
+     * boundaries keep their manifold so that a higher-order mapping sees them.
+     *
+     * @throws std::runtime_error naming the file path tried when a mesh file
+     *   is missing or cannot be read.
+     */
+    template <int dim>
+    void
+    create_mesh(const MeshParameters &parameters,
+                dealii::parallel::fullydistributed::Triangulation<dim> &tria);
+
+    /** All boundary ids present on the (global) mesh. */
+    template <int dim>
+    std::vector<unsigned int>
+    global_boundary_ids(
+      const dealii::parallel::fullydistributed::Triangulation<dim> &tria);
+  } // namespace core
+} // namespace particulate
+
+#endif

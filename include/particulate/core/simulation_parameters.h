@@ -1,0 +1,70 @@
+#ifndef particulate_core_simulation_parameters_h
+#define particulate_core_simulation_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace particulate {
+  namespace core {
+    /** subsection `Simulation`: what to run and in which dimension. */
+    struct SimulationParameters
+    {
+      /** What the run simulates. */
+      enum class Type
+      {
+        fluid ///< incompressible flow with body-fitted obstacles
+      };
+      Type         type      = Type::fluid;
+      unsigned int dimension = 2;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /** subsection `Time`: the time-stepping scheme and the time step. */
+    struct TimeParameters
+    {
+      /**
+       * The one-step schemes of thesis §5.3.2. `steady` solves the stationary
+       * problem with one nonlinear solve.
+       */
+      enum class Scheme
+      {
+        steady,
+        backward_euler,
+        crank_nicolson,
+        fractional_step_theta
+      };
+      Scheme scheme            = Scheme::fractional_step_theta;
+      double time_step         = 0.01; ///< [s]
+      double end_time          = 1.0;  ///< [s]
+      bool   adaptive          = false;
+      double cfl_target        = 1.0;
+      double minimum_time_step = 1e-6; ///< [s]
+      double maximum_time_step = 1.0;  ///< [s]
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /** subsection `Output`: where and how often results are written. */
+    struct OutputParameters
+    {
+      std::string  directory = "output";
+      unsigned int interval  = 1; ///< write VTU every this many time steps
+      bool         write_vtu = true;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+  } // namespace core
+} // namespace particulate
+
+#endif

@@ -1,0 +1,141 @@
+#ifndef particulate_fluid_fluid_parameters_h
+#define particulate_fluid_fluid_parameters_h
+
+#include <particulate/core/function_expression.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace particulate {
+  namespace fluid {
+    /**
+     * subsection `Fluid`: material properties (thesis eq. 5.1-5.2). Density
+     * and the *dynamic* viscosity mu are given separately; the kinematic
+     * viscosity is nu = mu / rho.
+     */
+    struct FluidProperties
+    {
+      double density = 1.0; ///< rho [kg/m^3]
+      double dynamic_viscosity
+        = 1e-3; ///< mu [Pa s]; zero-shear value for Carreau
+      std::string viscosity_model                  = "Newtonian";
+      double      carreau_infinite_shear_viscosity = 0.; ///< mu_inf [Pa s]
+      double      carreau_relaxation_time          = 1.; ///< lambda [s]
+      double      carreau_exponent                 = 1.; ///< n [-]
+      core::FunctionExpression
+        body_force; ///< f [m/s^2], acceleration (gravity)
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * subsection `Boundary conditions`: one kind of condition per boundary
+     * id. Every boundary id of the mesh must appear in exactly one list;
+     * the check after reading the mesh enforces it.
+     */
+    struct BoundaryConditions
+    {
+      std::vector<unsigned int> no_slip;    ///< u = 0
+      std::vector<unsigned int> dirichlet;  ///< u = g(x, t)
+      std::vector<unsigned int> free_slip;  ///< u.n = 0, tangential traction 0
+      std::vector<unsigned int> do_nothing; ///< sigma.n = 0 (outflow)
+      core::FunctionExpression  dirichlet_velocity;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+
+      /**
+       * Check that every id in @p mesh_ids has exactly one condition and that
+       * every listed id exists on the mesh. Throws with an actionable message.
+       */
+      void
+      check(const std::vector<unsigned int> &mesh_ids,
+            const std::string               &parameter_file) const;
+
+      /** True when some boundary fixes the pressure level (outflow). */
+      bool
+      pressure_is_determined() const
+      {
+        return !do_nothing.empty();
+      }
+    };
+
+    /** subsection `Nonlinear solver`. */
+    struct NonlinearSolverParameters
+    {
+      std::string  method             = "Newton"; ///< "Newton" or "fixed point"
+      double       absolute_tolerance = 1e-10;
+      double       relative_tolerance = 1e-8;
+      unsigned int maximum_iterations = 20;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /** subsection `Linear solver`. */
+    struct LinearSolverParameters
+    {
+      double       relative_tolerance = 1e-4;
+      unsigned int maximum_iterations = 1000;
+      unsigned int krylov_size        = 100;
+      /// "Cahouet-Chabard" or "least-squares commutator"
+      std::string  schur_approximation        = "Cahouet-Chabard";
+      double       pressure_poisson_tolerance = 1e-2;
+      bool         amg_elliptic               = true;
+      std::string  amg_smoother               = "Chebyshev";
+      unsigned int amg_smoother_sweeps        = 2;
+      bool         verbose                    = false;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * subsection `Forces`: what the solver measures every step. Drag and
+     * lift coefficients are c = 2 F / (rho U^2 A) with the reference
+     * velocity U and area A (the diameter per unit depth in 2D).
+     */
+    struct ForceParameters
+    {
+      std::vector<unsigned int> body_boundary_ids;
+      double                    reference_velocity = 1.;
+      double                    reference_area     = 1.;
+      std::vector<double>       pressure_point_a;
+      std::vector<double>       pressure_point_b;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+
+    /** All fluid-solver parameters together. */
+    struct FluidParameters
+    {
+      FluidProperties           properties;
+      BoundaryConditions        boundary_conditions;
+      core::FunctionExpression  initial_velocity;
+      NonlinearSolverParameters nonlinear_solver;
+      LinearSolverParameters    linear_solver;
+      ForceParameters           forces;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+    };
+  } // namespace fluid
+} // namespace particulate
+
+#endif

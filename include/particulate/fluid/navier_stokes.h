@@ -1,0 +1,249 @@
+#ifndef particulate_fluid_navier_stokes_h
+#define particulate_fluid_navier_stokes_h
+
+#include <particulate/core/simulation_parameters.h>
+#include <particulate/fluid/fluid_parameters.h>
+#include <particulate/fluid/viscosity_model.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_precondition.h>
+
+#include <memory>
+#include <vector>
+
+namespace particulate {
+  namespace fluid {
+    /**
+     * One implicit stage of a one-step scheme (thesis eq. 5.14/5.16):
+     *
+     *   rho (u - u_old)/k + theta_i N(u) u + grad p
+     *     = - theta_e N(u_old) u_old + theta_i f(t_new) + theta_e f(t_old)
+     *
+     * with N(v)u = rho (v - w).grad u - div(2 mu D(u)) and w the mesh
+     * velocity (ALE). `time_step = 0` means the steady problem N(u)u + grad p
+     * = f.
+     */
+    struct Stage
+    {
+      double time_step      = 0.; ///< k [s]; 0 for steady
+      double theta_implicit = 1.;
+      double theta_explicit = 0.;
+      double time_old       = 0.; ///< [s]
+      double time_new       = 0.; ///< [s]
+    };
+
+    /** Iteration counts of one stage or one macro step. */
+    struct SolveStatistics
+    {
+      unsigned int nonlinear_iterations = 0;
+      unsigned int linear_iterations    = 0;
+      double       final_residual       = 0.;
+      bool         used_fixed_point     = false;
+
+      SolveStatistics &
+      operator+=(const SolveStatistics &other);
+    };
+
+    /**
+     * Incompressible Navier-Stokes solver with Q2/P1disc elements on a
+     * parallel::fullydistributed::Triangulation, Trilinos block matrices,
+     * Newton (with a fixed-point fallback) and FGMRES preconditioned by a
+     * block-triangular preconditioner: algebraic multigrid for the velocity
+     * block, and for the Schur complement the Cahouet-Chabard combination
+     * theta_i mu M_p^{-1} + (rho/k) L_p^{-1} (pressure mass matrix for the
+     * viscous limit, the discrete pressure Laplacian L_p = B diag(M_u)^{-1}
+     * B^T for the small-time-step limit), which keeps iteration counts flat
+     * under refinement at all time steps.
+     *
+     * The class knows nothing of particles. Users that impose extra
+     * constraints (the fictitious boundary method) add them through
+     * set_additional_constraints(); the ALE mesh velocity enters through
+     * set_mesh_velocity().
+     */
+    template <int dim>
+    class NavierStokes
+    {
+    public:
+      using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+      NavierStokes(const FluidParameters &parameters,
+                   dealii::parallel::fullydistributed::Triangulation<dim> &tria,
+                   dealii::TimerOutput &timer);
+
+      /**
+       * Distribute DoFs, build constraints and matrices, and set the initial
+       * velocity from subsection `Initial condition`.
+       */
+      void
+      setup_dofs();
+
+      /** Interpolate the initial condition at @p time. */
+      void
+      set_initial_condition(const double time);
+
+      /**
+       * Advance from @p time by one macro step @p time_step with @p scheme
+       * (three stages for fractional-step theta), or solve the steady
+       * problem. Throws std::runtime_error when a solver diverges.
+       */
+      SolveStatistics
+      advance(const double                       time,
+              const double                       time_step,
+              const core::TimeParameters::Scheme scheme);
+
+      /** Solve one stage (public for tests of individual schemes). */
+      SolveStatistics
+      solve_stage(const Stage &stage);
+
+      /**
+       * Nodal interpolation of a velocity field (a function with dim
+       * components) into the velocity components of @p vector (locally
+       * owned layout); pressure entries are left untouched. deal.II's
+       * VectorTools::interpolate cannot be used because FE_DGP has no
+       * support points.
+       */
+      void
+      interpolate_velocity(const dealii::Function<dim> &velocity,
+                           BlockVector                 &vector) const;
+
+      /** ALE: mesh velocity w in the velocity components (ghosted). */
+      void
+      set_mesh_velocity(const BlockVector &mesh_velocity);
+
+      /** Largest |u| dt / h over the locally owned cells, all ranks. */
+      double
+      cfl_number(const double time_step) const;
+
+      const dealii::DoFHandler<dim> &
+      get_dof_handler() const
+      {
+        return dof_handler;
+      }
+      const dealii::Mapping<dim> &
+      get_mapping() const
+      {
+        return mapping;
+      }
+      const dealii::FESystem<dim> &
+      get_fe() const
+      {
+        return fe;
+      }
+      /** The current solution with ghost entries. */
+      const BlockVector &
+      get_solution() const
+      {
+        return solution;
+      }
+      const ViscosityModel &
+      get_viscosity_model() const
+      {
+        return *viscosity_model;
+      }
+      const FluidParameters &
+      get_parameters() const
+      {
+        return parameters;
+      }
+      MPI_Comm
+      get_communicator() const
+      {
+        return communicator;
+      }
+      dealii::types::global_dof_index
+      n_dofs() const
+      {
+        return dof_handler.n_dofs();
+      }
+      dealii::types::global_dof_index
+      n_velocity_dofs() const
+      {
+        return owned_partitioning.empty() ? 0 : dofs_per_block[0];
+      }
+
+      /** A vector with this solver's layout, locally owned entries only. */
+      BlockVector
+      make_owned_vector() const
+      {
+        return BlockVector(owned_partitioning, communicator);
+      }
+      /** A vector with this solver's layout and ghost entries. */
+      BlockVector
+      make_ghosted_vector() const
+      {
+        return BlockVector(owned_partitioning,
+                           relevant_partitioning,
+                           communicator);
+      }
+
+    private:
+      void
+      make_constraints(const double time);
+      void
+      setup_matrices();
+      void
+      assemble(const Stage &stage,
+               const bool   assemble_matrix,
+               const bool   newton);
+      void
+      build_schur_complement_approximation();
+      unsigned int
+      solve_linear(const Stage &stage, const double tolerance);
+      void
+      normalise_pressure();
+
+      const FluidParameters     &parameters;
+      MPI_Comm                   communicator;
+      dealii::ConditionalOStream pcout;
+      dealii::TimerOutput       &timer;
+
+      dealii::parallel::fullydistributed::Triangulation<dim> &triangulation;
+      const dealii::FESystem<dim>                             fe;
+      const dealii::MappingQ<dim>                             mapping;
+      dealii::DoFHandler<dim>                                 dof_handler;
+      std::unique_ptr<ViscosityModel>                         viscosity_model;
+      std::unique_ptr<dealii::Function<dim>> body_force, boundary_velocity;
+
+      std::vector<dealii::IndexSet>                owned_partitioning;
+      std::vector<dealii::IndexSet>                relevant_partitioning;
+      std::vector<dealii::types::global_dof_index> dofs_per_block;
+      dealii::IndexSet                             locally_relevant_dofs;
+
+      /// Dirichlet values at the stage's end time (applied to the solution)
+      dealii::AffineConstraints<double> nonzero_constraints;
+      /// the same rows with zero values (applied to Newton updates)
+      dealii::AffineConstraints<double> zero_constraints;
+
+      dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
+      /// pressure mass matrix M_p in block (1,1); other blocks empty
+      dealii::TrilinosWrappers::BlockSparseMatrix pressure_mass;
+      /// L_p = B diag(M_u)^{-1} B^T, rebuilt when B changes
+      dealii::TrilinosWrappers::SparseMatrix pressure_laplacian;
+      /// 1 / (row sums of the velocity mass matrix), velocity block layout
+      dealii::TrilinosWrappers::MPI::Vector inverse_lumped_mass;
+      bool        schur_approximation_is_current = false;
+      BlockVector system_rhs;
+      BlockVector newton_update;
+      BlockVector solution;      // ghosted
+      BlockVector old_solution;  // ghosted
+      BlockVector mesh_velocity; // ghosted
+      bool        has_mesh_velocity = false;
+
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> velocity_amg;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
+    };
+  } // namespace fluid
+} // namespace particulate
+
+#endif

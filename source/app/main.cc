@@ -1,0 +1,179 @@
+// The `particulate` executable: parse the command line and the .prm file,
+// then hand over to the simulation the file asks for.
+
+#include <particulate/core/input_file.h>
+#include <particulate/core/mesh.h>
+#include <particulate/fluid/flow_simulation.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace {
+  using namespace particulate;
+
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage:\n"
+           "  particulate CASE.prm               run a case (also under "
+           "mpirun -np N)\n"
+           "  particulate --validate CASE.prm    check a parameter file and "
+           "exit\n"
+           "  particulate --print-parameters     list every parameter with "
+           "its documentation,\n"
+           "                                     default and valid values\n"
+           "  particulate --print-parameters=markdown   the same as the "
+           "Markdown reference\n"
+           "                                            (doc/parameters.md)\n"
+           "  particulate --help                 this text\n\n"
+           "Cases live in prm/<case>/<case>.prm; see README.md and "
+           "doc/parameters.md.\n";
+  }
+
+  /**
+   * Read and check @p filename completely: names, values, and the checks
+   * that need the coarse mesh (boundary ids). Nothing is written.
+   */
+  fluid::FlowCaseParameters
+  read_case(dealii::ParameterHandler &prm, const std::string &filename)
+  {
+    core::parse_input_file(prm, filename);
+    fluid::FlowCaseParameters parameters;
+    parameters.parse(prm);
+    parameters.mesh.base_directory
+      = std::filesystem::path(filename).parent_path().string();
+    if (parameters.mesh.base_directory.empty())
+      parameters.mesh.base_directory = ".";
+    return parameters;
+  }
+
+  template <int dim>
+  void
+  check_case(const fluid::FlowCaseParameters &parameters,
+             const std::string               &filename,
+             MPI_Comm                         comm)
+  {
+    // expressions with the right number of components
+    parameters.fluid.properties.body_force.create<dim>(dim,
+                                                       "Fluid / Body force");
+    parameters.fluid.boundary_conditions.dirichlet_velocity
+      .create<dim>(dim, "Boundary conditions / Velocity");
+    parameters.fluid.initial_velocity
+      .create<dim>(dim, "Initial condition / Velocity");
+    // boundary ids against the coarse mesh
+    auto coarse        = parameters.mesh;
+    coarse.refinements = 0;
+    dealii::parallel::fullydistributed::Triangulation<dim> tria(comm);
+    core::create_mesh(coarse, tria);
+    parameters.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
+                                               filename);
+  }
+
+  template <int dim>
+  void
+  run_case(const fluid::FlowCaseParameters &parameters,
+           const std::string               &filename,
+           MPI_Comm                         comm)
+  {
+    fluid::FlowSimulation<dim> simulation(parameters, filename, comm);
+    simulation.run();
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+  std::vector<std::string> args(argv + 1, argv + argc);
+  try
+    {
+      dealii::ParameterHandler prm;
+      fluid::FlowCaseParameters::declare(prm);
+
+      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+        {
+          if (root)
+            print_usage(std::cout);
+          return args.empty() ? 1 : 0;
+        }
+      if (args[0] == "--print-parameters"
+          || args[0] == "--print-parameters=prm")
+        {
+          if (root)
+            core::write_parameter_listing(prm, std::cout);
+          return 0;
+        }
+      if (args[0] == "--print-parameters=markdown")
+        {
+          if (root)
+            core::write_parameter_reference(prm, std::cout);
+          return 0;
+        }
+
+      const bool        validate_only = args[0] == "--validate";
+      const std::string filename
+        = validate_only && args.size() > 1 ? args[1] : args[0];
+      if (filename.rfind("--", 0) == 0 || (validate_only && args.size() < 2))
+        {
+          if (root)
+            {
+              std::cerr << "particulate: unknown option or missing file '"
+                        << filename << "'.\n\n";
+              print_usage(std::cerr);
+            }
+          return 1;
+        }
+
+      const fluid::FlowCaseParameters parameters = read_case(prm, filename);
+      const unsigned int              dim = parameters.simulation.dimension;
+      if (dim == 2)
+        check_case<2>(parameters, filename, comm);
+      else
+        check_case<3>(parameters, filename, comm);
+      if (validate_only)
+        {
+          if (root)
+            std::cout << filename << ": OK" << std::endl;
+          return 0;
+        }
+
+      const std::string &dir = parameters.output.directory;
+      if (root)
+        {
+          std::filesystem::create_directories(dir);
+          std::ofstream used(dir + "/used_parameters.prm");
+          core::write_parameter_listing(prm, used);
+          std::cout
+            << "Particulate: running " << filename << " (" << dim << "D) on "
+            << dealii::Utilities::MPI::n_mpi_processes(comm)
+            << " rank(s)\nOutput folder: "
+            << std::filesystem::absolute(dir).lexically_normal().string()
+            << std::endl;
+        }
+      MPI_Barrier(comm);
+      if (dim == 2)
+        run_case<2>(parameters, filename, comm);
+      else
+        run_case<3>(parameters, filename, comm);
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "\nparticulate: error: " << e.what() << std::endl;
+      // a rank that fails alone must not leave the others waiting
+      if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+        MPI_Abort(comm, 1);
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,310 @@
+#include <particulate/core/input_file.h>
+#include <particulate/core/mesh.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+namespace particulate {
+  namespace core {
+    using namespace dealii;
+
+    void
+    MeshParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry(
+        "Type",
+        "hyper rectangle",
+        Patterns::Selection("hyper rectangle|channel with cylinder|file"),
+        "Where the coarse mesh comes from. 'hyper rectangle': a box with "
+        "boundary ids 0..2*dim-1 (x-min, x-max, y-min, y-max, z-min, z-max). "
+        "'channel with cylinder': the DFG benchmark channel (height and depth "
+        "0.41 m, cylinder diameter 0.1 m, axis along z at y = 0.2 m) with "
+        "boundary ids 0 inflow, 1 outflow, 2 cylinder, 3 walls. 'file': read "
+        "'File name'.");
+      prm.declare_entry("File name",
+                        "",
+                        Patterns::Anything(),
+                        "Coarse mesh file: Gmsh (.msh), UCD (.ucd) or Abaqus "
+                        "(.inp). A relative path is taken from the folder of "
+                        "the .prm file.");
+      prm.declare_entry("Refinements",
+                        "2",
+                        Patterns::Integer(0, 12),
+                        "Number of global refinements of the coarse mesh.");
+      prm.declare_entry("Lower corner",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Hyper rectangle: lower corner [m] (the first dim "
+                        "values are used).");
+      prm.declare_entry("Upper corner",
+                        "1, 1, 1",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Hyper rectangle: upper corner [m].");
+      prm.declare_entry("Subdivisions",
+                        "1, 1, 1",
+                        Patterns::List(Patterns::Integer(1), 2, 3),
+                        "Hyper rectangle: coarse cells per direction.");
+      prm.declare_entry("Cylinder shell width",
+                        "0.03",
+                        Patterns::Double(0.),
+                        "Channel with cylinder: width of the layer of "
+                        "concentric shells around the cylinder [m].");
+      prm.declare_entry("Cylinder shells",
+                        "2",
+                        Patterns::Integer(1),
+                        "Channel with cylinder: number of shells.");
+      prm.declare_entry("Cylinder center x",
+                        "0.2",
+                        Patterns::Double(0.12),
+                        "Channel with cylinder: x of the cylinder axis [m] "
+                        "(0.2 for DFG 2D, 0.5 for DFG 3D-1Z). The mesh is "
+                        "stretched upstream of the cylinder to place it.");
+      prm.declare_entry("Channel length",
+                        "2.2",
+                        Patterns::Double(0.5),
+                        "Channel with cylinder: length of the channel [m] "
+                        "(2.2 for DFG 2D, 2.5 for DFG 3D-1Z).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    MeshParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      const std::string t = prm.get("Type");
+      type                = t == "file"                  ? Type::file :
+                            t == "channel with cylinder" ? Type::channel_with_cylinder :
+                                                           Type::hyper_rectangle;
+      file_name           = prm.get("File name");
+      refinements         = prm.get_integer("Refinements");
+      const auto doubles  = [&](const std::string &name) {
+        std::vector<double> v;
+        for (const auto &s : Utilities::split_string_list(prm.get(name)))
+          v.push_back(Utilities::string_to_double(s));
+        return v;
+      };
+      lower_corner = doubles("Lower corner");
+      upper_corner = doubles("Upper corner");
+      subdivisions.clear();
+      for (const auto &s :
+           Utilities::split_string_list(prm.get("Subdivisions")))
+        subdivisions.push_back(Utilities::string_to_int(s));
+      cylinder_shell_width
+        = core::get_positive_double(prm, "Cylinder shell width", "Mesh");
+      cylinder_shells   = prm.get_integer("Cylinder shells");
+      cylinder_center_x = prm.get_double("Cylinder center x");
+      channel_length    = prm.get_double("Channel length");
+      prm.leave_subsection();
+    }
+
+
+
+    namespace {
+      template <int dim>
+      Point<dim>
+      corner(const std::vector<double> &values, const std::string &entry)
+      {
+        if (values.size() < dim)
+          throw std::runtime_error("Mesh: the entry '" + entry + "' needs "
+                                   + std::to_string(dim) + " values in "
+                                   + std::to_string(dim) + "D.");
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = values[d];
+        return p;
+      }
+
+      /**
+       * deal.II's channel_with_cylinder has its axis at x = 0.2 and length
+       * 2.2. Move the axis to @p center_x and set the length by a piecewise
+       * linear map of x that is a pure shift around the cylinder (so the
+       * shells stay circular) and a stretch upstream and downstream of it.
+       */
+      template <int dim>
+      void
+      place_cylinder(Triangulation<dim> &tria,
+                     const double        center_x,
+                     const double        length)
+      {
+        const double shift = center_x - 0.2;
+        const double a = 0.1, b = 0.3, old_length = 2.2;
+        if (length - (b + shift) < 0.1)
+          throw std::runtime_error(
+            "Mesh: 'Channel length' must exceed 'Cylinder center x' + 0.2 m.");
+        GridTools::transform(
+          [&](const Point<dim> &p) {
+            Point<dim> q = p;
+            if (p[0] <= a)
+              q[0] = p[0] * (a + shift) / a;
+            else if (p[0] <= b)
+              q[0] = p[0] + shift;
+            else
+              q[0] = b + shift
+                     + (p[0] - b) * (length - b - shift) / (old_length - b);
+            return q;
+          },
+          tria);
+
+        // the curved manifolds depend on where the axis is
+        Point<dim> axis_point;
+        axis_point[0] = center_x;
+        axis_point[1] = 0.2;
+        if constexpr (dim == 2)
+          tria.set_manifold(0, PolarManifold<2>(axis_point));
+        else
+          tria.set_manifold(0,
+                            CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}),
+                                                   axis_point));
+        TransfiniteInterpolationManifold<dim> transfinite;
+        transfinite.initialize(tria);
+        tria.set_manifold(1, transfinite);
+      }
+
+      template <int dim>
+      void
+      read_mesh_file(const MeshParameters &p, Triangulation<dim> &tria)
+      {
+        if (p.file_name.empty())
+          throw std::runtime_error(
+            "Mesh: 'Type = file' needs 'File name' in subsection 'Mesh'.");
+        std::filesystem::path path(p.file_name);
+        if (path.is_relative())
+          path = std::filesystem::path(p.base_directory) / path;
+        if (!std::filesystem::exists(path))
+          throw std::runtime_error(
+            "Mesh: cannot find the mesh file '" + path.string()
+            + "' (entry 'File name' in subsection 'Mesh'; relative paths are "
+              "taken from the folder of the .prm file).");
+        GridIn<dim>       grid_in(tria);
+        const std::string extension = path.extension().string();
+        try
+          {
+            std::ifstream in(path);
+            if (extension == ".msh")
+              grid_in.read_msh(in);
+            else if (extension == ".ucd")
+              grid_in.read_ucd(in);
+            else if (extension == ".inp")
+              grid_in.read_abaqus(in);
+            else
+              throw std::runtime_error(
+                "Mesh: unknown mesh format '" + extension + "' of '"
+                + path.string()
+                + "'. Use Gmsh (.msh), UCD (.ucd) or Abaqus (.inp).");
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream info;
+            e.print_info(info);
+            throw std::runtime_error("Mesh: cannot read '" + path.string()
+                                     + "': " + info.str());
+          }
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    create_mesh(const MeshParameters                           &p,
+                parallel::fullydistributed::Triangulation<dim> &tria)
+    {
+      Triangulation<dim> serial;
+      switch (p.type)
+        {
+          case MeshParameters::Type::hyper_rectangle:
+            {
+              std::vector<unsigned int> repetitions(dim);
+              for (unsigned int d = 0; d < dim; ++d)
+                repetitions[d]
+                  = d < p.subdivisions.size() ? p.subdivisions[d] : 1;
+              GridGenerator::subdivided_hyper_rectangle(
+                serial,
+                repetitions,
+                corner<dim>(p.lower_corner, "Lower corner"),
+                corner<dim>(p.upper_corner, "Upper corner"),
+                /*colorize=*/true);
+              break;
+            }
+          case MeshParameters::Type::channel_with_cylinder:
+            GridGenerator::channel_with_cylinder(serial,
+                                                 p.cylinder_shell_width,
+                                                 p.cylinder_shells,
+                                                 2.0,
+                                                 /*colorize=*/true);
+            if (p.cylinder_center_x != 0.2 || p.channel_length != 2.2)
+              place_cylinder(serial, p.cylinder_center_x, p.channel_length);
+            break;
+          case MeshParameters::Type::file:
+            read_mesh_file(p, serial);
+            break;
+        }
+      serial.refine_global(p.refinements);
+
+      const MPI_Comm comm = tria.get_communicator();
+      GridTools::partition_triangulation_zorder(Utilities::MPI::n_mpi_processes(
+                                                  comm),
+                                                serial);
+
+      // Stateless manifolds (polar, cylindrical) carry over; a transfinite
+      // interpolation refers to the serial coarse mesh and cannot, but the
+      // vertices it placed are already in the refined mesh, and a flat
+      // description of those interior cells is all the mapping needs.
+      for (const auto id : serial.get_manifold_ids())
+        if (id != numbers::flat_manifold_id)
+          {
+            const Manifold<dim> &m = serial.get_manifold(id);
+            if (dynamic_cast<const TransfiniteInterpolationManifold<dim> *>(&m))
+              tria.set_manifold(id, FlatManifold<dim>());
+            else
+              tria.set_manifold(id, m);
+          }
+      tria.create_triangulation(
+        TriangulationDescription::Utilities::
+          create_description_from_triangulation(serial, comm));
+    }
+
+
+
+    template <int dim>
+    std::vector<unsigned int>
+    global_boundary_ids(
+      const parallel::fullydistributed::Triangulation<dim> &tria)
+    {
+      std::set<unsigned int> local;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              local.insert(face->boundary_id());
+      const std::vector<unsigned int> mine(local.begin(), local.end());
+      return Utilities::MPI::compute_set_union(mine, tria.get_communicator());
+    }
+
+    template void
+    create_mesh<2>(const MeshParameters &,
+                   parallel::fullydistributed::Triangulation<2> &);
+    template void
+    create_mesh<3>(const MeshParameters &,
+                   parallel::fullydistributed::Triangulation<3> &);
+    template std::vector<unsigned int>
+    global_boundary_ids<2>(
+      const parallel::fullydistributed::Triangulation<2> &);
+    template std::vector<unsigned int>
+    global_boundary_ids<3>(
+      const parallel::fullydistributed::Triangulation<3> &);
+  } // namespace core
+} // namespace particulate

@@ -1,0 +1,133 @@
+#include <particulate/core/input_file.h>
+#include <particulate/core/simulation_parameters.h>
+
+namespace particulate {
+  namespace core {
+    using dealii::ParameterHandler;
+    namespace Patterns = dealii::Patterns;
+
+    void
+    SimulationParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Simulation");
+      prm.declare_entry("Type",
+                        "fluid",
+                        Patterns::Selection("fluid"),
+                        "What to simulate. 'fluid': incompressible "
+                        "Navier-Stokes flow around body-fitted obstacles.");
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "Space dimension of the run (2 or 3).");
+      prm.leave_subsection();
+    }
+
+    void
+    SimulationParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Simulation");
+      type      = Type::fluid;
+      dimension = prm.get_integer("Dimension");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    TimeParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      prm.declare_entry(
+        "Scheme",
+        "fractional-step theta",
+        Patterns::Selection(
+          "fractional-step theta|Crank-Nicolson|backward Euler|steady"),
+        "Time discretisation (thesis §5.3.2). 'fractional-step theta' is "
+        "strongly A-stable and second order; 'Crank-Nicolson' is second order "
+        "without damping; 'backward Euler' is first order and strongly "
+        "damping; 'steady' solves the stationary equations once.");
+      prm.declare_entry("Time step",
+                        "0.01",
+                        Patterns::Double(0.),
+                        "Macro time step [s]. With fractional-step theta "
+                        "one step is three substeps.");
+      prm.declare_entry("End time",
+                        "1",
+                        Patterns::Double(0.),
+                        "Physical time at which the run stops [s].");
+      prm.declare_entry("Adaptive time step",
+                        "false",
+                        Patterns::Bool(),
+                        "Choose the step from the CFL number after each step "
+                        "(bounded by the minimum and maximum time step).");
+      prm.declare_entry("CFL number",
+                        "1",
+                        Patterns::Double(0.),
+                        "Target CFL number max(|u| dt / h) for the adaptive "
+                        "time step [-].");
+      prm.declare_entry("Minimum time step",
+                        "1e-6",
+                        Patterns::Double(0.),
+                        "Lower bound of the adaptive time step [s].");
+      prm.declare_entry("Maximum time step",
+                        "1",
+                        Patterns::Double(0.),
+                        "Upper bound of the adaptive time step [s].");
+      prm.leave_subsection();
+    }
+
+    void
+    TimeParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      const std::string s = prm.get("Scheme");
+      scheme              = s == "steady"         ? Scheme::steady :
+                            s == "backward Euler" ? Scheme::backward_euler :
+                            s == "Crank-Nicolson" ? Scheme::crank_nicolson :
+                                                    Scheme::fractional_step_theta;
+      time_step           = core::get_positive_double(prm, "Time step", "Time");
+      end_time            = prm.get_double("End time");
+      adaptive            = prm.get_bool("Adaptive time step");
+      cfl_target = core::get_positive_double(prm, "CFL number", "Time");
+      minimum_time_step
+        = core::get_positive_double(prm, "Minimum time step", "Time");
+      maximum_time_step
+        = core::get_positive_double(prm, "Maximum time step", "Time");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    OutputParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Folder for all results (created if missing). A "
+                        "relative path is taken from the current directory.");
+      prm.declare_entry("Interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Write ParaView files every this many time steps (0: "
+                        "only the last step). Time series (.dat) are written "
+                        "every step.");
+      prm.declare_entry("Write ParaView files",
+                        "true",
+                        Patterns::Bool(),
+                        "Write .vtu/.pvtu/.pvd files of the flow field.");
+      prm.leave_subsection();
+    }
+
+    void
+    OutputParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory = prm.get("Directory");
+      interval  = prm.get_integer("Interval");
+      write_vtu = prm.get_bool("Write ParaView files");
+      prm.leave_subsection();
+    }
+  } // namespace core
+} // namespace particulate

@@ -1,0 +1,48 @@
+#include <particulate/core/time_series_writer.h>
+
+#include <iomanip>
+#include <stdexcept>
+
+namespace particulate {
+  namespace core {
+    TimeSeriesWriter::TimeSeriesWriter(const std::string              &filename,
+                                       const std::vector<std::string> &columns,
+                                       MPI_Comm                        comm,
+                                       const bool                      append)
+      : columns(columns)
+    {
+      int rank = 0;
+      MPI_Comm_rank(comm, &rank);
+      writer = rank == 0;
+      if (!writer)
+        return;
+      out.open(filename, append ? std::ios::app : std::ios::trunc);
+      if (!out)
+        throw std::runtime_error("Cannot write the time series '" + filename
+                                 + "'. Check that 'Directory' in subsection "
+                                   "'Output' is writable.");
+      if (!append)
+        {
+          out << "#";
+          for (const auto &c : columns)
+            out << ' ' << c;
+          out << std::endl;
+        }
+      out << std::setprecision(12);
+    }
+
+    void
+    TimeSeriesWriter::write_row(const std::vector<double> &values)
+    {
+      if (values.size() != columns.size())
+        throw std::logic_error("TimeSeriesWriter: row has "
+                               + std::to_string(values.size()) + " values for "
+                               + std::to_string(columns.size()) + " columns");
+      if (!writer)
+        return;
+      for (unsigned int i = 0; i < values.size(); ++i)
+        out << (i > 0 ? " " : "") << values[i];
+      out << std::endl;
+    }
+  } // namespace core
+} // namespace particulate

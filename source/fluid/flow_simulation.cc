@@ -1,0 +1,264 @@
+#include <particulate/core/progress_reporter.h>
+#include <particulate/core/time_series_writer.h>
+#include <particulate/fluid/flow_diagnostics.h>
+#include <particulate/fluid/flow_output.h>
+#include <particulate/fluid/flow_simulation.h>
+#include <particulate/fluid/navier_stokes.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fluid {
+    using namespace dealii;
+
+    void
+    FlowCaseParameters::declare(ParameterHandler &prm)
+    {
+      core::SimulationParameters::declare(prm);
+      core::TimeParameters::declare(prm);
+      core::OutputParameters::declare(prm);
+      core::MeshParameters::declare(prm);
+      FluidParameters::declare(prm);
+    }
+
+    void
+    FlowCaseParameters::parse(ParameterHandler &prm)
+    {
+      simulation.parse(prm);
+      time.parse(prm);
+      output.parse(prm);
+      mesh.parse(prm);
+      fluid.parse(prm);
+    }
+
+
+
+    template <int dim>
+    FlowSimulation<dim>::FlowSimulation(const FlowCaseParameters &parameters,
+                                        const std::string &parameter_file,
+                                        MPI_Comm           comm)
+      : parameters(parameters)
+      , parameter_file(parameter_file)
+      , communicator(comm)
+    {}
+
+
+
+    namespace {
+      template <int dim>
+      Point<dim>
+      to_point(const std::vector<double> &v, const std::string &entry)
+      {
+        if (v.size() < dim)
+          throw std::runtime_error("subsection 'Forces': the entry '" + entry
+                                   + "' needs " + std::to_string(dim)
+                                   + " coordinates.");
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = v[d];
+        return p;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    FlowRunSummary
+    FlowSimulation<dim>::run()
+    {
+      ConditionalOStream pcout(std::cout,
+                               Utilities::MPI::this_mpi_process(communicator)
+                                 == 0);
+      TimerOutput        timer(communicator,
+                        pcout,
+                        TimerOutput::never,
+                        TimerOutput::wall_times);
+      const auto        &forces = parameters.fluid.forces;
+      const auto        &time_p = parameters.time;
+      const bool steady = time_p.scheme == core::TimeParameters::Scheme::steady;
+
+      parallel::fullydistributed::Triangulation<dim> tria(communicator);
+      {
+        TimerOutput::Scope scope(timer, "mesh");
+        core::create_mesh(parameters.mesh, tria);
+      }
+      const auto mesh_ids = core::global_boundary_ids(tria);
+      parameters.fluid.boundary_conditions.check(mesh_ids, parameter_file);
+      for (const unsigned int id : forces.body_boundary_ids)
+        if (std::find(mesh_ids.begin(), mesh_ids.end(), id) == mesh_ids.end())
+          throw std::runtime_error(parameter_file
+                                   + ": subsection 'Forces': 'Body boundary "
+                                     "ids' names boundary id "
+                                   + std::to_string(id)
+                                   + ", which is not on the mesh.");
+      const bool has_pressure_points = !forces.pressure_point_a.empty();
+      Point<dim> point_a, point_b;
+      if (has_pressure_points)
+        {
+          point_a = to_point<dim>(forces.pressure_point_a, "Pressure point A");
+          point_b = to_point<dim>(forces.pressure_point_b, "Pressure point B");
+        }
+
+      NavierStokes<dim> flow(parameters.fluid, tria, timer);
+      flow.setup_dofs();
+      flow.set_initial_condition(0.);
+      pcout << "Mesh: " << tria.n_global_active_cells() << " cells, "
+            << flow.n_dofs() << " DoFs (" << flow.n_velocity_dofs()
+            << " velocity + " << flow.n_dofs() - flow.n_velocity_dofs()
+            << " pressure) on " << Utilities::MPI::n_mpi_processes(communicator)
+            << " rank(s)" << std::endl;
+
+      const auto indicator
+        = forces.body_boundary_ids.empty() ?
+            flow.make_ghosted_vector() :
+            boundary_indicator(flow, forces.body_boundary_ids);
+      const double coefficient_scale
+        = 2.
+          / (parameters.fluid.properties.density * forces.reference_velocity
+             * forces.reference_velocity * forces.reference_area);
+
+      std::vector<std::string> columns{"time"};
+      const char              *axes[] = {"x", "y", "z"};
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back(std::string("F_") + axes[d]);
+      for (const std::string name : {"c_D",
+                                     "c_L",
+                                     "c_D_volume",
+                                     "c_L_volume",
+                                     "delta_p",
+                                     "kinetic_energy",
+                                     "nonlinear_iterations",
+                                     "linear_iterations",
+                                     "time_step"})
+        columns.push_back(name);
+      const std::string     &dir = parameters.output.directory;
+      core::TimeSeriesWriter series(dir + "/flow.dat", columns, communicator);
+      FlowOutput<dim>        output(dir, "flow");
+
+      FlowRunSummary summary;
+      summary.n_dofs = flow.n_dofs();
+      const auto record =
+        [&](const double time, const double dt, const SolveStatistics &stats) {
+          TimerOutput::Scope scope(timer, "diagnostics");
+          Tensor<1, dim>     f, f_volume;
+          if (!forces.body_boundary_ids.empty())
+            {
+              f        = surface_force(flow, forces.body_boundary_ids);
+              f_volume = volume_force(flow, indicator);
+            }
+          summary.drag_coefficient        = coefficient_scale * f[0];
+          summary.lift_coefficient        = coefficient_scale * f[1];
+          summary.drag_coefficient_volume = coefficient_scale * f_volume[0];
+          summary.lift_coefficient_volume = coefficient_scale * f_volume[1];
+          summary.pressure_difference
+            = has_pressure_points ?
+                pressure_at(flow, point_a) - pressure_at(flow, point_b) :
+                0.;
+          summary.kinetic_energy = kinetic_energy(flow);
+          std::vector<double> row{time};
+          for (unsigned int d = 0; d < dim; ++d)
+            row.push_back(f[d]);
+          for (const double v : {summary.drag_coefficient,
+                                 summary.lift_coefficient,
+                                 summary.drag_coefficient_volume,
+                                 summary.lift_coefficient_volume,
+                                 summary.pressure_difference,
+                                 summary.kinetic_energy,
+                                 double(stats.nonlinear_iterations),
+                                 double(stats.linear_iterations),
+                                 dt})
+            row.push_back(v);
+          series.write_row(row);
+        };
+      const auto write_fields = [&](const unsigned int step, const double t) {
+        if (parameters.output.write_vtu)
+          {
+            TimerOutput::Scope scope(timer, "output");
+            output.write(flow, step, t);
+          }
+      };
+
+      core::ProgressReporter progress(pcout.get_stream(),
+                                      0.,
+                                      steady ? 1. : time_p.end_time);
+      const auto             counts = [](const SolveStatistics &s) {
+        char buffer[96];
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      "nonlinear %2u%s linear %4u",
+                      s.nonlinear_iterations,
+                      s.used_fixed_point ? "*" : " ",
+                      s.linear_iterations);
+        return std::string(buffer);
+      };
+
+      double       t    = 0.;
+      double       dt   = time_p.time_step;
+      unsigned int step = 0;
+      if (steady)
+        {
+          const SolveStatistics stats
+            = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
+          record(0., 0., stats);
+          write_fields(0, 0.);
+          if (pcout.is_active())
+            progress.report(0, 1., 0., counts(stats));
+          step = 1;
+        }
+      else
+        {
+          record(0., dt, SolveStatistics());
+          write_fields(0, 0.);
+          const double eps = 1e-12 * std::max(1., time_p.end_time);
+          while (t < time_p.end_time - eps)
+            {
+              dt                          = std::min(dt, time_p.end_time - t);
+              const SolveStatistics stats = flow.advance(t, dt, time_p.scheme);
+              t += dt;
+              ++step;
+              record(t, dt, stats);
+              const bool last = t >= time_p.end_time - eps;
+              if ((parameters.output.interval > 0
+                   && step % parameters.output.interval == 0)
+                  || last)
+                write_fields(step, t);
+              if (pcout.is_active())
+                progress.report(step, t, dt, counts(stats));
+              if (time_p.adaptive)
+                {
+                  // aim at the target CFL number, change by at most 20 %
+                  const double cfl = flow.cfl_number(dt);
+                  const double proposal
+                    = cfl > 0. ? dt * time_p.cfl_target / cfl : 1.2 * dt;
+                  dt = std::clamp(std::clamp(proposal, 0.8 * dt, 1.2 * dt),
+                                  time_p.minimum_time_step,
+                                  time_p.maximum_time_step);
+                }
+            }
+        }
+      summary.n_steps      = step;
+      summary.end_time     = t;
+      summary.wall_seconds = progress.elapsed_seconds();
+
+      pcout << "\nFinal: c_D = " << summary.drag_coefficient
+            << "  c_L = " << summary.lift_coefficient
+            << "  (volume integral: c_D = " << summary.drag_coefficient_volume
+            << ", c_L = " << summary.lift_coefficient_volume << ")";
+      if (has_pressure_points)
+        pcout << "  delta_p = " << summary.pressure_difference;
+      pcout << "\nResults are in " << dir << "/ (flow.pvd, flow.dat)"
+            << std::endl;
+      timer.print_wall_time_statistics(communicator);
+      return summary;
+    }
+
+    template class FlowSimulation<2>;
+    template class FlowSimulation<3>;
+  } // namespace fluid
+} // namespace particulate

@@ -1,0 +1,379 @@
+#include <particulate/core/input_file.h>
+#include <particulate/fluid/fluid_parameters.h>
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fluid {
+    using dealii::ParameterHandler;
+    namespace Patterns  = dealii::Patterns;
+    namespace Utilities = dealii::Utilities;
+
+    namespace {
+      std::vector<unsigned int>
+      id_list(const ParameterHandler &prm, const std::string &name)
+      {
+        std::vector<unsigned int> ids;
+        for (const auto &s : Utilities::split_string_list(prm.get(name)))
+          ids.push_back(Utilities::string_to_int(s));
+        return ids;
+      }
+
+      std::vector<double>
+      double_list(const ParameterHandler &prm, const std::string &name)
+      {
+        std::vector<double> v;
+        for (const auto &s : Utilities::split_string_list(prm.get(name)))
+          v.push_back(Utilities::string_to_double(s));
+        return v;
+      }
+    } // namespace
+
+
+
+    void
+    FluidProperties::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fluid");
+      prm.declare_entry("Density",
+                        "1",
+                        Patterns::Double(0.),
+                        "Fluid density rho [kg/m^3].");
+      prm.declare_entry("Dynamic viscosity",
+                        "1e-3",
+                        Patterns::Double(0.),
+                        "Dynamic viscosity mu [Pa s] (NOT the kinematic "
+                        "viscosity nu = mu/rho). For the Carreau model this is "
+                        "the zero-shear viscosity mu_0.");
+      prm.declare_entry(
+        "Viscosity model",
+        "Newtonian",
+        Patterns::Selection("Newtonian|Carreau"),
+        "Newtonian: constant mu. Carreau: mu = mu_inf + (mu_0 - mu_inf) (1 + "
+        "(lambda gamma_dot)^2)^((n-1)/2), shear-thinning for n < 1 and "
+        "shear-thickening for n > 1.");
+      prm.declare_entry("Carreau infinite-shear viscosity",
+                        "0",
+                        Patterns::Double(0.),
+                        "Carreau: mu_inf [Pa s].");
+      prm.declare_entry("Carreau relaxation time",
+                        "1",
+                        Patterns::Double(0.),
+                        "Carreau: lambda [s].");
+      prm.declare_entry("Carreau exponent",
+                        "1",
+                        Patterns::Double(0.),
+                        "Carreau: power-law index n [-].");
+      core::FunctionExpression::declare(prm,
+                                        "Body force",
+                                        "",
+                                        "Body force per unit mass f [m/s^2], "
+                                        "e.g. gravity '0; -9.81'.");
+      prm.leave_subsection();
+    }
+
+    void
+    FluidProperties::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fluid");
+      density = core::get_positive_double(prm, "Density", "Fluid");
+      dynamic_viscosity
+        = core::get_positive_double(prm, "Dynamic viscosity", "Fluid");
+      viscosity_model = prm.get("Viscosity model");
+      carreau_infinite_shear_viscosity
+        = prm.get_double("Carreau infinite-shear viscosity");
+      carreau_relaxation_time = prm.get_double("Carreau relaxation time");
+      carreau_exponent
+        = core::get_positive_double(prm, "Carreau exponent", "Fluid");
+      body_force.parse(prm, "Body force");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      const auto ids = Patterns::List(Patterns::Integer(0, 255), 0);
+      prm.declare_entry("No-slip",
+                        "",
+                        ids,
+                        "Boundary ids of walls at rest (u = 0).");
+      prm.declare_entry("Dirichlet velocity",
+                        "",
+                        ids,
+                        "Boundary ids where u = 'Velocity' (e.g. an inflow).");
+      prm.declare_entry("Free-slip",
+                        "",
+                        ids,
+                        "Boundary ids with u.n = 0 and no tangential traction "
+                        "(symmetry planes). Planar boundaries only.");
+      prm.declare_entry("Do-nothing",
+                        "",
+                        ids,
+                        "Boundary ids with zero traction sigma.n = 0 "
+                        "(outflow). The pressure level is then fixed; without "
+                        "any, the pressure has zero mean.");
+      core::FunctionExpression::declare(prm,
+                                        "Velocity",
+                                        "",
+                                        "Velocity [m/s] on the 'Dirichlet "
+                                        "velocity' boundaries.");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      no_slip    = id_list(prm, "No-slip");
+      dirichlet  = id_list(prm, "Dirichlet velocity");
+      free_slip  = id_list(prm, "Free-slip");
+      do_nothing = id_list(prm, "Do-nothing");
+      dirichlet_velocity.parse(prm, "Velocity");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::check(const std::vector<unsigned int> &mesh_ids,
+                              const std::string &parameter_file) const
+    {
+      const std::string where
+        = parameter_file + ": subsection 'Boundary conditions': ";
+      std::map<unsigned int, std::string> owner;
+      const auto claim = [&](const std::vector<unsigned int> &ids,
+                             const std::string               &entry) {
+        for (const unsigned int id : ids)
+          {
+            if (owner.count(id))
+              throw std::runtime_error(
+                where + "boundary id " + std::to_string(id)
+                + " is listed under both '" + owner[id] + "' and '" + entry
+                + "'. Give each boundary exactly one condition.");
+            owner[id] = entry;
+            if (std::find(mesh_ids.begin(), mesh_ids.end(), id)
+                == mesh_ids.end())
+              {
+                std::string present;
+                for (const unsigned int m : mesh_ids)
+                  present += " " + std::to_string(m);
+                throw std::runtime_error(where + "entry '" + entry
+                                         + "' names boundary id "
+                                         + std::to_string(id)
+                                         + ", which is not on the mesh (the "
+                                           "mesh has boundary ids"
+                                         + present + ").");
+              }
+          }
+      };
+      claim(no_slip, "No-slip");
+      claim(dirichlet, "Dirichlet velocity");
+      claim(free_slip, "Free-slip");
+      claim(do_nothing, "Do-nothing");
+      for (const unsigned int id : mesh_ids)
+        if (!owner.count(id))
+          throw std::runtime_error(
+            where + "the mesh has boundary id " + std::to_string(id)
+            + " but no condition for it. Add it to 'No-slip', 'Dirichlet "
+              "velocity', 'Free-slip' or 'Do-nothing'.");
+    }
+
+
+
+    void
+    NonlinearSolverParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Method",
+                        "Newton",
+                        Patterns::Selection("Newton|fixed point"),
+                        "Linearisation of the convective term. Newton "
+                        "converges quadratically; it falls back to the "
+                        "fixed-point (Oseen) iteration for the rest of the "
+                        "step when the residual stops decreasing.");
+      prm.declare_entry("Absolute tolerance",
+                        "1e-10",
+                        Patterns::Double(0.),
+                        "Stop when the l2 norm of the residual is below this.");
+      prm.declare_entry("Relative tolerance",
+                        "1e-8",
+                        Patterns::Double(0.),
+                        "Stop when the residual has fallen by this factor.");
+      prm.declare_entry("Maximum iterations",
+                        "20",
+                        Patterns::Integer(1),
+                        "Nonlinear iterations per (sub)step before the run "
+                        "stops with an error.");
+      prm.leave_subsection();
+    }
+
+    void
+    NonlinearSolverParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      method             = prm.get("Method");
+      absolute_tolerance = prm.get_double("Absolute tolerance");
+      relative_tolerance = prm.get_double("Relative tolerance");
+      maximum_iterations = prm.get_integer("Maximum iterations");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolverParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      prm.declare_entry("Relative tolerance",
+                        "1e-4",
+                        Patterns::Double(0.),
+                        "FGMRES stops when the residual of the Newton update "
+                        "has fallen by this factor.");
+      prm.declare_entry("Maximum iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "FGMRES iterations before the run stops with an "
+                        "error.");
+      prm.declare_entry("Krylov subspace size",
+                        "100",
+                        Patterns::Integer(5),
+                        "Restart length of FGMRES.");
+      prm.declare_entry(
+        "Schur complement approximation",
+        "Cahouet-Chabard",
+        Patterns::Selection("Cahouet-Chabard|least-squares commutator"),
+        "Cahouet-Chabard: theta mu M_p^-1 + rho/k L_p^-1, cheap and robust "
+        "for time-dependent flow at any time step. least-squares commutator "
+        "(LSC): L_p^-1 B D^-1 A D^-1 B^T L_p^-1 with D the lumped velocity "
+        "mass; also captures convection, so it is the choice for steady "
+        "flow (the 'steady' scheme uses it whatever is set here).");
+      prm.declare_entry("Pressure Poisson tolerance",
+                        "1e-2",
+                        Patterns::Double(0.),
+                        "Relative tolerance of the inner CG+AMG solves with "
+                        "the pressure Laplacian L_p inside the Schur "
+                        "complement approximation.");
+      prm.declare_entry("AMG elliptic",
+                        "true",
+                        Patterns::Bool(),
+                        "Trilinos ML aggregation for the velocity block: true "
+                        "uses smoothed aggregation (diffusion/mass dominated "
+                        "flow), false the non-symmetric variant (strong "
+                        "convection).");
+      prm.declare_entry("AMG smoother",
+                        "Chebyshev",
+                        Patterns::Selection(
+                          "Chebyshev|symmetric Gauss-Seidel|Gauss-Seidel|ILU"),
+                        "Smoother on every level of the velocity AMG.");
+      prm.declare_entry("AMG smoother sweeps",
+                        "2",
+                        Patterns::Integer(1),
+                        "Smoothing sweeps per level of the velocity AMG.");
+      prm.declare_entry("Verbose",
+                        "false",
+                        Patterns::Bool(),
+                        "Print every nonlinear iteration's residual.");
+      prm.leave_subsection();
+    }
+
+    void
+    LinearSolverParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      relative_tolerance
+        = core::get_positive_double(prm, "Relative tolerance", "Linear solver");
+      maximum_iterations  = prm.get_integer("Maximum iterations");
+      krylov_size         = prm.get_integer("Krylov subspace size");
+      schur_approximation = prm.get("Schur complement approximation");
+      pressure_poisson_tolerance
+        = core::get_positive_double(prm,
+                                    "Pressure Poisson tolerance",
+                                    "Linear solver");
+      amg_elliptic        = prm.get_bool("AMG elliptic");
+      amg_smoother        = prm.get("AMG smoother");
+      amg_smoother_sweeps = prm.get_integer("AMG smoother sweeps");
+      verbose             = prm.get_bool("Verbose");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    ForceParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Forces");
+      prm.declare_entry("Body boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 255), 0),
+                        "Boundary ids of the obstacle whose drag and lift are "
+                        "written (empty: none).");
+      prm.declare_entry("Reference velocity",
+                        "1",
+                        Patterns::Double(0.),
+                        "U in c = 2F/(rho U^2 A) [m/s].");
+      prm.declare_entry("Reference area",
+                        "1",
+                        Patterns::Double(0.),
+                        "A in c = 2F/(rho U^2 A) [m^2]; in 2D a length [m] "
+                        "(per unit depth).");
+      prm.declare_entry("Pressure point A",
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 3),
+                        "Point [m] for the pressure difference p(A) - p(B) "
+                        "(empty: none).");
+      prm.declare_entry("Pressure point B",
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 3),
+                        "Second point [m] of the pressure difference.");
+      prm.leave_subsection();
+    }
+
+    void
+    ForceParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Forces");
+      body_boundary_ids = id_list(prm, "Body boundary ids");
+      reference_velocity
+        = core::get_positive_double(prm, "Reference velocity", "Forces");
+      reference_area
+        = core::get_positive_double(prm, "Reference area", "Forces");
+      pressure_point_a = double_list(prm, "Pressure point A");
+      pressure_point_b = double_list(prm, "Pressure point B");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    FluidParameters::declare(ParameterHandler &prm)
+    {
+      FluidProperties::declare(prm);
+      BoundaryConditions::declare(prm);
+      prm.enter_subsection("Initial condition");
+      core::FunctionExpression::declare(prm,
+                                        "Velocity",
+                                        "",
+                                        "Initial velocity [m/s].");
+      prm.leave_subsection();
+      NonlinearSolverParameters::declare(prm);
+      LinearSolverParameters::declare(prm);
+      ForceParameters::declare(prm);
+    }
+
+    void
+    FluidParameters::parse(ParameterHandler &prm)
+    {
+      properties.parse(prm);
+      boundary_conditions.parse(prm);
+      prm.enter_subsection("Initial condition");
+      initial_velocity.parse(prm, "Velocity");
+      prm.leave_subsection();
+      nonlinear_solver.parse(prm);
+      linear_solver.parse(prm);
+      forces.parse(prm);
+    }
+  } // namespace fluid
+} // namespace particulate

@@ -1,0 +1,253 @@
+#include <particulate/fluid/navier_stokes.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+namespace particulate {
+  namespace fluid {
+    using namespace dealii;
+
+    /*
+     * Residual and Jacobian of one stage (see Stage). With test functions
+     * (v, q) the residual is
+     *
+     *   R_u(v) = rho/k (u - u_old, v)
+     *          + theta_i [ (2 mu D(u), D(v)) + rho ((u - w).grad u, v)
+     *                      - rho (f_new, v) ]
+     *          + theta_e [ (2 mu D(u_old), D(v)) + rho ((u_old - w).grad
+     *                      u_old, v) - rho (f_old, v) ]
+     *          - (p, div v)
+     *   R_p(q) = -(div u, q)
+     *
+     * and the right-hand side is -R. The Jacobian freezes mu at the current
+     * iterate; the term rho (du.grad u, v) is the Newton part that the
+     * fixed-point (Oseen) iteration omits.
+     */
+    template <int dim>
+    void
+    NavierStokes<dim>::assemble(const Stage &stage,
+                                const bool   assemble_matrix,
+                                const bool   newton)
+    {
+      TimerOutput::Scope scope(timer,
+                               assemble_matrix ? "fluid: assemble matrix" :
+                                                 "fluid: assemble residual");
+      if (assemble_matrix)
+        system_matrix = 0;
+      system_rhs = 0;
+
+      const double rho         = parameters.properties.density;
+      const bool   steady      = stage.time_step == 0.;
+      const double mass_coeff  = steady ? 0. : rho / stage.time_step;
+      const double ti          = stage.theta_implicit;
+      const double te          = steady ? 0. : stage.theta_explicit;
+      const bool   variable_mu = viscosity_model->depends_on_shear_rate();
+
+      const QGauss<dim>                quadrature(3);
+      FEValues<dim>                    fe_values(mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_gradients
+                                | update_quadrature_points | update_JxW_values);
+      const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+      const unsigned int               n_q           = quadrature.size();
+      const FEValuesExtractors::Vector velocities(0);
+      const FEValuesExtractors::Scalar pressure(dim);
+
+      FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+      Vector<double>     cell_rhs(dofs_per_cell);
+      std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+
+      std::vector<Tensor<1, dim>> u(n_q), u_old(n_q), w(n_q);
+      std::vector<Tensor<2, dim>> grad_u(n_q), grad_u_old(n_q);
+      std::vector<double>         p(n_q), div_u(n_q);
+      std::vector<Vector<double>> f_new(n_q, Vector<double>(dim)),
+        f_old(n_q, Vector<double>(dim));
+
+      std::vector<Tensor<1, dim>>          phi_u(dofs_per_cell);
+      std::vector<Tensor<2, dim>>          grad_phi_u(dofs_per_cell);
+      std::vector<SymmetricTensor<2, dim>> sym_grad_phi_u(dofs_per_cell);
+      std::vector<double> div_phi_u(dofs_per_cell), phi_p(dofs_per_cell);
+
+      const bool has_body_force
+        = dynamic_cast<const Functions::ZeroFunction<dim> *>(body_force.get())
+          == nullptr;
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell_matrix = 0;
+            cell_rhs    = 0;
+
+            fe_values[velocities].get_function_values(solution, u);
+            fe_values[velocities].get_function_gradients(solution, grad_u);
+            fe_values[velocities].get_function_divergences(solution, div_u);
+            fe_values[pressure].get_function_values(solution, p);
+            if (!steady)
+              {
+                fe_values[velocities].get_function_values(old_solution, u_old);
+                fe_values[velocities].get_function_gradients(old_solution,
+                                                             grad_u_old);
+              }
+            if (has_mesh_velocity)
+              fe_values[velocities].get_function_values(mesh_velocity, w);
+            if (has_body_force)
+              {
+                body_force->set_time(stage.time_new);
+                body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                              f_new);
+                body_force->set_time(stage.time_old);
+                body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                              f_old);
+              }
+
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const double JxW = fe_values.JxW(q);
+                for (unsigned int k = 0; k < dofs_per_cell; ++k)
+                  {
+                    phi_u[k]          = fe_values[velocities].value(k, q);
+                    grad_phi_u[k]     = fe_values[velocities].gradient(k, q);
+                    sym_grad_phi_u[k] = symmetrize(grad_phi_u[k]);
+                    div_phi_u[k]      = trace(grad_phi_u[k]);
+                    phi_p[k]          = fe_values[pressure].value(k, q);
+                  }
+
+                const SymmetricTensor<2, dim> D  = symmetrize(grad_u[q]);
+                const double                  mu = viscosity_model->viscosity(
+                  variable_mu ? std::sqrt(2. * D * D) : 0.);
+                Tensor<1, dim> advecting = u[q];
+                if (has_mesh_velocity)
+                  advecting -= w[q];
+
+                // strong-form vector parts of the residual: (a, v) + (S, D(v))
+                Tensor<1, dim> vector_part = ti * rho * (grad_u[q] * advecting);
+                SymmetricTensor<2, dim> tensor_part = ti * 2. * mu * D;
+                if (!steady)
+                  {
+                    vector_part += mass_coeff * (u[q] - u_old[q]);
+                    if (te != 0.)
+                      {
+                        const SymmetricTensor<2, dim> D_old
+                          = symmetrize(grad_u_old[q]);
+                        const double mu_old = viscosity_model->viscosity(
+                          variable_mu ? std::sqrt(2. * D_old * D_old) : 0.);
+                        Tensor<1, dim> advecting_old = u_old[q];
+                        if (has_mesh_velocity)
+                          advecting_old -= w[q];
+                        vector_part
+                          += te * rho * (grad_u_old[q] * advecting_old);
+                        tensor_part += te * 2. * mu_old * D_old;
+                      }
+                  }
+                if (has_body_force)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    vector_part[d]
+                      -= rho * (ti * f_new[q][d] + te * f_old[q][d]);
+
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  {
+                    cell_rhs(i) -= (vector_part * phi_u[i]
+                                    + tensor_part * sym_grad_phi_u[i]
+                                    - p[q] * div_phi_u[i] - div_u[q] * phi_p[i])
+                                   * JxW;
+                    if (assemble_matrix)
+                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                        {
+                          double value
+                            = mass_coeff * (phi_u[j] * phi_u[i])
+                              + ti
+                                  * (2. * mu
+                                       * (sym_grad_phi_u[j] * sym_grad_phi_u[i])
+                                     + rho
+                                         * ((grad_phi_u[j] * advecting)
+                                            * phi_u[i]))
+                              - phi_p[j] * div_phi_u[i]
+                              - div_phi_u[j] * phi_p[i];
+                          if (newton)
+                            value
+                              += ti * rho * ((grad_u[q] * phi_u[j]) * phi_u[i]);
+                          cell_matrix(i, j) += value * JxW;
+                        }
+                  }
+              }
+
+            cell->get_dof_indices(dof_indices);
+            if (assemble_matrix)
+              zero_constraints.distribute_local_to_global(cell_matrix,
+                                                          cell_rhs,
+                                                          dof_indices,
+                                                          system_matrix,
+                                                          system_rhs);
+            else
+              zero_constraints.distribute_local_to_global(cell_rhs,
+                                                          dof_indices,
+                                                          system_rhs);
+          }
+      if (assemble_matrix)
+        system_matrix.compress(VectorOperation::add);
+      system_rhs.compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::build_schur_complement_approximation()
+    {
+      TimerOutput::Scope scope(timer, "fluid: Schur approximation");
+      // L_p = B diag(M_u)^{-1} B^T from the divergence blocks of the current
+      // matrix (they do not depend on the iterate, only on mesh and
+      // constraints). The sign convention B = -div makes L_p positive.
+      system_matrix.block(1, 0).mmult(pressure_laplacian,
+                                      system_matrix.block(0, 1),
+                                      inverse_lumped_mass);
+      if (!parameters.boundary_conditions.pressure_is_determined())
+        {
+          // Enclosed flow: L_p is singular (constant pressures). Pinning one
+          // pressure value makes the multigrid solve well posed; the
+          // preconditioner only needs the action on mean-free data.
+          const auto &owned = owned_partitioning[1];
+          const bool  first_owner
+            = owned.n_elements() > 0 && owned.nth_index_in_set(0) == 0;
+          if (first_owner)
+            pressure_laplacian.add(0, 0, pressure_laplacian.diag_element(0));
+          pressure_laplacian.compress(VectorOperation::add);
+        }
+
+      TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+      // The near-null space of L_p is the piecewise constant pressure, i.e.
+      // only the first (constant) FE_DGP shape function of each cell, not
+      // the vector of all ones that ML assumes by default.
+      std::vector<std::vector<bool>> constant_modes;
+      DoFTools::extract_constant_modes(dof_handler,
+                                       fe.component_mask(
+                                         FEValuesExtractors::Scalar(dim)),
+                                       constant_modes);
+      amg_data.constant_modes        = constant_modes;
+      amg_data.elliptic              = true;
+      amg_data.higher_order_elements = false;
+      amg_data.smoother_sweeps       = 2;
+      amg_data.aggregation_threshold = 0.02;
+      laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      laplace_amg->initialize(pressure_laplacian, amg_data);
+
+      mass_ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
+      mass_ilu->initialize(pressure_mass.block(1, 1));
+      schur_approximation_is_current = true;
+    }
+
+    template void
+    NavierStokes<2>::assemble(const Stage &, const bool, const bool);
+    template void
+    NavierStokes<3>::assemble(const Stage &, const bool, const bool);
+    template void
+    NavierStokes<2>::build_schur_complement_approximation();
+    template void
+    NavierStokes<3>::build_schur_complement_approximation();
+  } // namespace fluid
+} // namespace particulate

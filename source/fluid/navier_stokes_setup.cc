@@ -1,0 +1,407 @@
+#include <particulate/fluid/navier_stokes.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgp.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+#include <set>
+
+namespace particulate {
+  namespace fluid {
+    using namespace dealii;
+
+    SolveStatistics &
+    SolveStatistics::operator+=(const SolveStatistics &other)
+    {
+      nonlinear_iterations += other.nonlinear_iterations;
+      linear_iterations += other.linear_iterations;
+      final_residual = other.final_residual;
+      used_fixed_point |= other.used_fixed_point;
+      return *this;
+    }
+
+
+
+    namespace {
+      /**
+       * A velocity-only function seen as a (velocity, pressure) function with
+       * zero pressure, so it can be used with the mixed element.
+       */
+      template <int dim>
+      class VelocityWithPressure : public Function<dim>
+      {
+      public:
+        explicit VelocityWithPressure(Function<dim> &velocity)
+          : Function<dim>(dim + 1)
+          , velocity(velocity)
+        {}
+        void
+        set_time(const double t) override
+        {
+          Function<dim>::set_time(t);
+          velocity.set_time(t);
+        }
+        double
+        value(const Point<dim> &p, const unsigned int c) const override
+        {
+          return c < dim ? velocity.value(p, c) : 0.;
+        }
+        void
+        vector_value(const Point<dim> &p, Vector<double> &v) const override
+        {
+          for (unsigned int c = 0; c < dim; ++c)
+            v[c] = velocity.value(p, c);
+          v[dim] = 0.;
+        }
+
+      private:
+        Function<dim> &velocity;
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    NavierStokes<dim>::NavierStokes(
+      const FluidParameters                          &parameters,
+      parallel::fullydistributed::Triangulation<dim> &tria,
+      TimerOutput                                    &timer)
+      : parameters(parameters)
+      , communicator(tria.get_communicator())
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
+      , timer(timer)
+      , triangulation(tria)
+      , fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1)
+      , mapping(2)
+      , dof_handler(tria)
+      , viscosity_model(ViscosityModel::create(parameters.properties))
+    {
+      body_force = parameters.properties.body_force
+                     .template create<dim>(dim, "Fluid / Body force");
+      boundary_velocity
+        = parameters.boundary_conditions.dirichlet_velocity
+            .template create<dim>(dim, "Boundary conditions / Velocity");
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::setup_dofs()
+    {
+      TimerOutput::Scope scope(timer, "fluid: setup");
+      dof_handler.distribute_dofs(fe);
+      // Cuthill-McKee makes the ILU smoothers of the AMG more effective;
+      // then velocity and pressure are put into separate blocks.
+      DoFRenumbering::Cuthill_McKee(dof_handler);
+      std::vector<unsigned int> block_component(dim + 1, 0);
+      block_component[dim] = 1;
+      DoFRenumbering::component_wise(dof_handler, block_component);
+
+      dofs_per_block
+        = DoFTools::count_dofs_per_fe_block(dof_handler, block_component);
+      const IndexSet owned = dof_handler.locally_owned_dofs();
+      owned_partitioning
+        = {owned.get_view(0, dofs_per_block[0]),
+           owned.get_view(dofs_per_block[0], dof_handler.n_dofs())};
+      DoFTools::extract_locally_relevant_dofs(dof_handler,
+                                              locally_relevant_dofs);
+      relevant_partitioning
+        = {locally_relevant_dofs.get_view(0, dofs_per_block[0]),
+           locally_relevant_dofs.get_view(dofs_per_block[0],
+                                          dof_handler.n_dofs())};
+
+      make_constraints(0.);
+      setup_matrices();
+
+      solution.reinit(owned_partitioning, relevant_partitioning, communicator);
+      old_solution.reinit(solution);
+      mesh_velocity.reinit(solution);
+      newton_update.reinit(owned_partitioning, communicator);
+      system_rhs.reinit(owned_partitioning, communicator);
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::make_constraints(const double time)
+    {
+      const auto                      &bc = parameters.boundary_conditions;
+      const FEValuesExtractors::Vector velocities(0);
+      const ComponentMask velocity_mask = fe.component_mask(velocities);
+
+      Functions::ZeroFunction<dim> zero(dim + 1);
+      boundary_velocity->set_time(time);
+      VelocityWithPressure<dim> dirichlet(*boundary_velocity);
+      dirichlet.set_time(time);
+
+      for (const bool homogeneous : {false, true})
+        {
+          AffineConstraints<double> &c
+            = homogeneous ? zero_constraints : nonzero_constraints;
+          c.clear();
+          c.reinit(locally_relevant_dofs);
+          DoFTools::make_hanging_node_constraints(dof_handler, c);
+          for (const unsigned int id : bc.no_slip)
+            VectorTools::interpolate_boundary_values(mapping,
+                                                     dof_handler,
+                                                     id,
+                                                     zero,
+                                                     c,
+                                                     velocity_mask);
+          for (const unsigned int id : bc.dirichlet)
+            VectorTools::interpolate_boundary_values(
+              mapping,
+              dof_handler,
+              id,
+              homogeneous ? static_cast<Function<dim> &>(zero) : dirichlet,
+              c,
+              velocity_mask);
+          if (!bc.free_slip.empty())
+            {
+              const std::set<types::boundary_id> ids(bc.free_slip.begin(),
+                                                     bc.free_slip.end());
+              VectorTools::compute_no_normal_flux_constraints(dof_handler,
+                                                              0,
+                                                              ids,
+                                                              c,
+                                                              mapping);
+            }
+          c.close();
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::setup_matrices()
+    {
+      system_matrix.clear();
+      pressure_mass.clear();
+      pressure_laplacian.clear();
+      velocity_amg.reset();
+      laplace_amg.reset();
+      mass_ilu.reset();
+      schur_approximation_is_current = false;
+
+      const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+      {
+        Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
+        for (unsigned int c = 0; c < dim + 1; ++c)
+          for (unsigned int d = 0; d < dim + 1; ++d)
+            coupling[c][d]
+              = (c == dim && d == dim) ? DoFTools::none : DoFTools::always;
+        TrilinosWrappers::BlockSparsityPattern sp(owned_partitioning,
+                                                  owned_partitioning,
+                                                  relevant_partitioning,
+                                                  communicator);
+        DoFTools::make_sparsity_pattern(dof_handler,
+                                        coupling,
+                                        sp,
+                                        zero_constraints,
+                                        false,
+                                        rank);
+        sp.compress();
+        system_matrix.reinit(sp);
+      }
+      {
+        Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
+        for (unsigned int c = 0; c < dim + 1; ++c)
+          for (unsigned int d = 0; d < dim + 1; ++d)
+            coupling[c][d]
+              = (c == dim && d == dim) ? DoFTools::always : DoFTools::none;
+        TrilinosWrappers::BlockSparsityPattern sp(owned_partitioning,
+                                                  owned_partitioning,
+                                                  relevant_partitioning,
+                                                  communicator);
+        DoFTools::make_sparsity_pattern(dof_handler,
+                                        coupling,
+                                        sp,
+                                        zero_constraints,
+                                        false,
+                                        rank);
+        sp.compress();
+        pressure_mass.reinit(sp);
+      }
+
+      // pressure mass matrix and lumped velocity mass: mesh quantities
+      TrilinosWrappers::MPI::BlockVector lumped(owned_partitioning,
+                                                communicator);
+      const QGauss<dim>                  quadrature(3);
+      FEValues<dim>                      fe_values(mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_JxW_values);
+      const unsigned int                 dofs_per_cell = fe.n_dofs_per_cell();
+      FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
+      Vector<double>     cell_lumped(dofs_per_cell);
+      std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+      const FEValuesExtractors::Vector     velocities(0);
+      const FEValuesExtractors::Scalar     pressure(dim);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell_mass   = 0;
+            cell_lumped = 0;
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const unsigned int ci = fe.system_to_component_index(i).first;
+                  if (ci == dim)
+                    {
+                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                        if (fe.system_to_component_index(j).first == dim)
+                          cell_mass(i, j) += fe_values[pressure].value(i, q)
+                                             * fe_values[pressure].value(j, q)
+                                             * fe_values.JxW(q);
+                    }
+                  else
+                    // row sum of the component's mass matrix = integral of
+                    // the shape function (partition of unity)
+                    cell_lumped(i)
+                      += fe_values.shape_value(i, q) * fe_values.JxW(q);
+                }
+            cell->get_dof_indices(dof_indices);
+            zero_constraints.distribute_local_to_global(cell_mass,
+                                                        dof_indices,
+                                                        pressure_mass);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              if (fe.system_to_component_index(i).first < dim)
+                lumped(dof_indices[i]) += cell_lumped(i);
+          }
+      pressure_mass.compress(VectorOperation::add);
+      lumped.compress(VectorOperation::add);
+      inverse_lumped_mass.reinit(owned_partitioning[0], communicator);
+      for (const auto i : owned_partitioning[0])
+        {
+          const double m         = lumped.block(0)(i);
+          inverse_lumped_mass(i) = m > 0. ? 1. / m : 0.;
+        }
+      inverse_lumped_mass.compress(VectorOperation::insert);
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::set_initial_condition(const double time)
+    {
+      auto initial = parameters.initial_velocity.template create<dim>(
+        dim,
+        "Initial condition / Velocity");
+      initial->set_time(time);
+      BlockVector tmp(owned_partitioning, communicator);
+      interpolate_velocity(*initial, tmp);
+      make_constraints(time);
+      nonzero_constraints.distribute(tmp);
+      solution     = tmp;
+      old_solution = solution;
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::interpolate_velocity(const Function<dim> &velocity,
+                                            BlockVector         &vector) const
+    {
+      const FiniteElement<dim> &velocity_fe = fe.base_element(0);
+      const Quadrature<dim>     nodes(velocity_fe.get_unit_support_points());
+      FEValues<dim> fe_values(mapping, fe, nodes, update_quadrature_points);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      std::vector<Vector<double>> values(nodes.size(), Vector<double>(dim));
+      const IndexSet             &owned = dof_handler.locally_owned_dofs();
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            velocity.vector_value_list(fe_values.get_quadrature_points(),
+                                       values);
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const auto base = fe.system_to_base_index(i);
+                if (base.first.first == 0 && owned.is_element(dof_indices[i]))
+                  vector(dof_indices[i])
+                    = values[base.second](base.first.second);
+              }
+          }
+      vector.compress(VectorOperation::insert);
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::set_mesh_velocity(const BlockVector &w)
+    {
+      mesh_velocity     = w;
+      has_mesh_velocity = true;
+    }
+
+
+
+    template <int dim>
+    double
+    NavierStokes<dim>::cfl_number(const double time_step) const
+    {
+      const QMidpoint<dim> quadrature;
+      FEValues<dim>        fe_values(mapping, fe, quadrature, update_values);
+      std::vector<Tensor<1, dim>>      u(1);
+      const FEValuesExtractors::Vector velocities(0);
+      double                           cfl = 0.;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[velocities].get_function_values(solution, u);
+            // Q2: the node spacing is half the cell size
+            cfl = std::max(cfl,
+                           u[0].norm() * time_step
+                             / (0.5 * cell->minimum_vertex_distance()));
+          }
+      return Utilities::MPI::max(cfl, communicator);
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::normalise_pressure()
+    {
+      // Enclosed flow: the pressure is fixed up to a constant; give it zero
+      // mean. FE_DGP's first shape function on each cell is the constant 1.
+      const double mean = VectorTools::compute_mean_value(mapping,
+                                                          dof_handler,
+                                                          QGauss<dim>(3),
+                                                          solution,
+                                                          dim);
+      BlockVector  tmp(owned_partitioning, communicator);
+      tmp                             = solution;
+      const unsigned int constant_dof = fe.component_to_system_index(dim, 0);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            tmp(dof_indices[constant_dof]) -= mean;
+          }
+      tmp.compress(VectorOperation::add);
+      solution = tmp;
+    }
+
+    template class NavierStokes<2>;
+    template class NavierStokes<3>;
+  } // namespace fluid
+} // namespace particulate

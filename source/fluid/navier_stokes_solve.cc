@@ -1,0 +1,371 @@
+#include <particulate/fluid/navier_stokes.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fluid {
+    using namespace dealii;
+
+    namespace {
+      /**
+       * Approximate action of L_p^{-1} (the discrete pressure Laplacian):
+       * conjugate gradients with an AMG preconditioner to a loose relative
+       * tolerance. A single V-cycle is not enough for the least-squares
+       * commutator, which applies L_p^{-1} twice; a few CG steps are.
+       */
+      class PressurePoissonSolver
+      {
+      public:
+        PressurePoissonSolver(const TrilinosWrappers::SparseMatrix    &matrix,
+                              const TrilinosWrappers::PreconditionAMG &amg,
+                              const double relative_tolerance)
+          : matrix(matrix)
+          , amg(amg)
+          , relative_tolerance(relative_tolerance)
+        {}
+
+        void
+        solve(TrilinosWrappers::MPI::Vector       &x,
+              const TrilinosWrappers::MPI::Vector &b) const
+        {
+          SolverControl                           control(200,
+                                relative_tolerance * b.l2_norm(),
+                                false,
+                                false);
+          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+          x = 0;
+          cg.solve(matrix, x, b, amg);
+          iterations += control.last_step();
+        }
+
+        mutable unsigned int iterations = 0;
+
+      private:
+        const TrilinosWrappers::SparseMatrix    &matrix;
+        const TrilinosWrappers::PreconditionAMG &amg;
+        const double                             relative_tolerance;
+      };
+
+
+
+      /**
+       * Upper block-triangular preconditioner P = [A B^T; 0 -S] with
+       * S = B A^{-1} B^T (B = -div, so S is positive):
+       *   x_p = -S^{-1} r_p,   x_u = A^{-1} (r_u - B^T x_p),
+       * with one AMG V-cycle for A^{-1} and one of two approximations of
+       * S^{-1}:
+       * - Cahouet-Chabard: theta_i mu M_p^{-1} + (rho/k) L_p^{-1};
+       * - least-squares commutator: L_p^{-1} (B D^{-1} A D^{-1} B^T) L_p^{-1},
+       * where L_p = B D^{-1} B^T and D is the lumped velocity mass matrix.
+       */
+      class BlockTriangularPreconditioner
+      {
+      public:
+        using BlockVector = TrilinosWrappers::MPI::BlockVector;
+
+        BlockTriangularPreconditioner(
+          const TrilinosWrappers::BlockSparseMatrix &matrix,
+          const TrilinosWrappers::PreconditionAMG   &velocity_amg,
+          const TrilinosWrappers::PreconditionILU   &mass_inverse,
+          const PressurePoissonSolver               &laplace_inverse,
+          const TrilinosWrappers::MPI::Vector       &inverse_lumped_mass,
+          const bool                                 least_squares_commutator,
+          const double                               viscous_weight,
+          const double                               inertial_weight)
+          : matrix(matrix)
+          , velocity_amg(velocity_amg)
+          , mass_inverse(mass_inverse)
+          , laplace_inverse(laplace_inverse)
+          , inverse_lumped_mass(inverse_lumped_mass)
+          , least_squares_commutator(least_squares_commutator)
+          , viscous_weight(viscous_weight)
+          , inertial_weight(inertial_weight)
+          , tmp_u(matrix.block(0, 0).locally_owned_range_indices(),
+                  matrix.get_mpi_communicator())
+          , tmp_u2(tmp_u)
+          , tmp_p(matrix.block(1, 1).locally_owned_range_indices(),
+                  matrix.get_mpi_communicator())
+        {}
+
+        void
+        vmult(BlockVector &dst, const BlockVector &src) const
+        {
+          if (least_squares_commutator)
+            {
+              laplace_inverse.solve(tmp_p, src.block(1));
+              matrix.block(0, 1).vmult(tmp_u, tmp_p);
+              tmp_u.scale(inverse_lumped_mass);
+              matrix.block(0, 0).vmult(tmp_u2, tmp_u);
+              tmp_u2.scale(inverse_lumped_mass);
+              matrix.block(1, 0).vmult(tmp_p, tmp_u2);
+              laplace_inverse.solve(dst.block(1), tmp_p);
+              dst.block(1) *= -1.;
+            }
+          else
+            {
+              mass_inverse.vmult(dst.block(1), src.block(1));
+              dst.block(1) *= -viscous_weight;
+              if (inertial_weight > 0.)
+                {
+                  laplace_inverse.solve(tmp_p, src.block(1));
+                  dst.block(1).add(-inertial_weight, tmp_p);
+                }
+            }
+          matrix.block(0, 1).vmult(tmp_u, dst.block(1));
+          tmp_u.sadd(-1., src.block(0));
+          velocity_amg.vmult(dst.block(0), tmp_u);
+        }
+
+      private:
+        const TrilinosWrappers::BlockSparseMatrix &matrix;
+        const TrilinosWrappers::PreconditionAMG   &velocity_amg;
+        const TrilinosWrappers::PreconditionILU   &mass_inverse;
+        const PressurePoissonSolver               &laplace_inverse;
+        const TrilinosWrappers::MPI::Vector       &inverse_lumped_mass;
+        const bool                                 least_squares_commutator;
+        const double                               viscous_weight;
+        const double                               inertial_weight;
+        mutable TrilinosWrappers::MPI::Vector      tmp_u, tmp_u2, tmp_p;
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    unsigned int
+    NavierStokes<dim>::solve_linear(const Stage &stage, const double tolerance)
+    {
+      if (!schur_approximation_is_current)
+        build_schur_complement_approximation();
+      if (!velocity_amg)
+        {
+          TimerOutput::Scope scope(timer, "fluid: velocity AMG setup");
+          std::vector<std::vector<bool>>   constant_modes;
+          const FEValuesExtractors::Vector velocities(0);
+          DoFTools::extract_constant_modes(dof_handler,
+                                           fe.component_mask(velocities),
+                                           constant_modes);
+          TrilinosWrappers::PreconditionAMG::AdditionalData data;
+          data.constant_modes = constant_modes;
+          data.elliptic       = parameters.linear_solver.amg_elliptic;
+          data.smoother_type  = parameters.linear_solver.amg_smoother.c_str();
+          data.higher_order_elements = true;
+          data.smoother_sweeps = parameters.linear_solver.amg_smoother_sweeps;
+          data.aggregation_threshold = 0.02;
+          velocity_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+          velocity_amg->initialize(system_matrix.block(0, 0), data);
+        }
+
+      TimerOutput::Scope          scope(timer, "fluid: linear solve");
+      const bool                  steady = stage.time_step == 0.;
+      const double                mu = viscosity_model->reference_viscosity();
+      const PressurePoissonSolver laplace_inverse(
+        pressure_laplacian,
+        *laplace_amg,
+        parameters.linear_solver.pressure_poisson_tolerance);
+      const BlockTriangularPreconditioner preconditioner(
+        system_matrix,
+        *velocity_amg,
+        *mass_ilu,
+        laplace_inverse,
+        inverse_lumped_mass,
+        steady
+          || parameters.linear_solver.schur_approximation
+               == "least-squares commutator",
+        stage.theta_implicit * mu,
+        steady ? 0. : parameters.properties.density / stage.time_step);
+
+      SolverControl control(parameters.linear_solver.maximum_iterations,
+                            tolerance,
+                            /*log_history=*/false,
+                            /*log_result=*/false);
+      SolverFGMRES<BlockVector> solver(
+        control,
+        SolverFGMRES<BlockVector>::AdditionalData(
+          parameters.linear_solver.krylov_size));
+      newton_update = 0;
+      try
+        {
+          solver.solve(system_matrix,
+                       newton_update,
+                       system_rhs,
+                       preconditioner);
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          std::ostringstream message;
+          message << "The linear solver (FGMRES) did not converge in "
+                  << e.last_step << " iterations (residual " << e.last_residual
+                  << ", target " << tolerance
+                  << "). Reduce 'Time step' in subsection 'Time', or raise "
+                     "'Maximum iterations' in subsection 'Linear solver'.";
+          throw std::runtime_error(message.str());
+        }
+      zero_constraints.distribute(newton_update);
+      return control.last_step();
+    }
+
+
+
+    template <int dim>
+    SolveStatistics
+    NavierStokes<dim>::solve_stage(const Stage &stage)
+    {
+      const auto &nl = parameters.nonlinear_solver;
+      make_constraints(stage.time_new);
+      // The iterate starts from the previous solution with the new Dirichlet
+      // values; the Newton updates then keep them (zero constraints).
+      BlockVector iterate(owned_partitioning, communicator);
+      iterate = solution;
+      nonzero_constraints.distribute(iterate);
+      solution = iterate;
+
+      // the preconditioners depend on the time step and the iterate
+      velocity_amg.reset();
+
+      SolveStatistics stats;
+      bool            newton = nl.method == "Newton";
+      assemble(stage, false, newton);
+      double       residual         = system_rhs.l2_norm();
+      const double initial_residual = residual;
+      const double target           = std::max(nl.absolute_tolerance,
+                                     nl.relative_tolerance * initial_residual);
+
+      // written so that a NaN residual enters the loop and is reported
+      while (!(residual <= target))
+        {
+          if (!std::isfinite(residual))
+            throw std::runtime_error(
+              "The flow solution is no longer finite (NaN or Inf in the "
+              "residual at t = "
+              + std::to_string(stage.time_new)
+              + " s). The time step is probably too large for this mesh: "
+                "reduce 'Time step' in subsection 'Time'.");
+          if (stats.nonlinear_iterations == nl.maximum_iterations)
+            {
+              std::ostringstream message;
+              message << "The nonlinear solver did not converge in "
+                      << nl.maximum_iterations
+                      << " iterations at t = " << stage.time_new
+                      << " s (residual " << residual << ", target " << target
+                      << "). Reduce 'Time step' in subsection 'Time' or raise "
+                         "'Maximum iterations' in subsection 'Nonlinear "
+                         "solver'.";
+              throw std::runtime_error(message.str());
+            }
+          assemble(stage, true, newton);
+          velocity_amg.reset(); // the Jacobian depends on the iterate
+          const unsigned int linear_iterations
+            = solve_linear(stage,
+                           std::max(parameters.linear_solver.relative_tolerance
+                                      * residual,
+                                    0.1 * nl.absolute_tolerance));
+          stats.linear_iterations += linear_iterations;
+          ++stats.nonlinear_iterations;
+
+          // damped update: halve the step until the residual decreases
+          const BlockVector start        = iterate;
+          double            step         = 1.;
+          double            new_residual = 0.;
+          for (unsigned int attempt = 0; attempt < 5; ++attempt)
+            {
+              iterate = start;
+              iterate.add(step, newton_update);
+              solution = iterate;
+              assemble(stage, false, newton);
+              new_residual = system_rhs.l2_norm();
+              if (new_residual < residual || !std::isfinite(residual))
+                break;
+              step *= 0.5;
+            }
+          if (new_residual >= residual && newton)
+            {
+              // Newton stagnates (far from the solution): use the more
+              // robust fixed-point linearisation for the rest of the stage.
+              newton                 = false;
+              stats.used_fixed_point = true;
+            }
+          if (parameters.linear_solver.verbose)
+            pcout << "      nonlinear iteration " << stats.nonlinear_iterations
+                  << ": residual " << new_residual << " (" << linear_iterations
+                  << " FGMRES iterations, step " << step
+                  << (newton ? ", Newton" : ", fixed point") << ")"
+                  << std::endl;
+          residual = new_residual;
+        }
+      stats.final_residual = residual;
+      if (!parameters.boundary_conditions.pressure_is_determined())
+        normalise_pressure();
+      return stats;
+    }
+
+
+
+    template <int dim>
+    SolveStatistics
+    NavierStokes<dim>::advance(const double                       time,
+                               const double                       k,
+                               const core::TimeParameters::Scheme scheme)
+    {
+      using Scheme = core::TimeParameters::Scheme;
+      std::vector<Stage> stages;
+      switch (scheme)
+        {
+          case Scheme::steady:
+            stages.push_back({0., 1., 0., time, time});
+            break;
+          case Scheme::backward_euler:
+            stages.push_back({k, 1., 0., time, time + k});
+            break;
+          case Scheme::crank_nicolson:
+            stages.push_back({k, 0.5, 0.5, time, time + k});
+            break;
+          case Scheme::fractional_step_theta:
+            {
+              // thesis eq. 5.14
+              const double theta       = 1. - std::sqrt(2.) / 2.;
+              const double theta_prime = 1. - 2. * theta;
+              const double alpha       = (1. - 2. * theta) / (1. - theta);
+              const double beta        = 1. - alpha;
+              const double t1          = time + theta * k;
+              const double t2          = time + (1. - theta) * k;
+              stages.push_back({theta * k, alpha, beta, time, t1});
+              stages.push_back({theta_prime * k, beta, alpha, t1, t2});
+              stages.push_back({theta * k, alpha, beta, t2, time + k});
+              break;
+            }
+        }
+      SolveStatistics total;
+      for (const Stage &stage : stages)
+        {
+          old_solution = solution;
+          total += solve_stage(stage);
+        }
+      return total;
+    }
+
+    template unsigned int
+    NavierStokes<2>::solve_linear(const Stage &, const double);
+    template unsigned int
+    NavierStokes<3>::solve_linear(const Stage &, const double);
+    template SolveStatistics
+    NavierStokes<2>::solve_stage(const Stage &);
+    template SolveStatistics
+    NavierStokes<3>::solve_stage(const Stage &);
+    template SolveStatistics
+    NavierStokes<2>::advance(const double,
+                             const double,
+                             const core::TimeParameters::Scheme);
+    template SolveStatistics
+    NavierStokes<3>::advance(const double,
+                             const double,
+                             const core::TimeParameters::Scheme);
+  } // namespace fluid
+} // namespace particulate
