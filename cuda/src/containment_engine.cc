@@ -13,10 +13,8 @@
 #include <thread>
 #include <vector>
 
-namespace particulate
-{
-  namespace cuda
-  {
+namespace particulate {
+  namespace cuda {
     const char *
     to_string(const Backend backend)
     {
@@ -31,12 +29,12 @@ namespace particulate
         }
     }
 
-    namespace
-    {
+    namespace {
       [[noreturn]] void
       bad_input(const std::string &where, const std::string &what)
       {
-        throw std::invalid_argument("particulate containment, " + where + ": " + what);
+        throw std::invalid_argument("particulate containment, " + where + ": "
+                                    + what);
       }
 
       bool
@@ -51,7 +49,8 @@ namespace particulate
       Backend  backend     = Backend::cpu;
       unsigned cpu_threads = 0;
 
-      /** Host copy of a shape (kept for the CPU path, which reads it directly). */
+      /** Host copy of a shape (kept for the CPU path, which reads it directly).
+       */
       struct HostShape
       {
         std::vector<float> values;
@@ -73,18 +72,21 @@ namespace particulate
             const BodyInstance &in = bodies[b];
             std::ostringstream  where;
             where << "classify(), body " << b;
-            if (in.shape < 0 || static_cast<std::size_t>(in.shape) >= views.size())
+            if (in.shape < 0
+                || static_cast<std::size_t>(in.shape) >= views.size())
               bad_input(where.str(),
-                        "shape handle " + std::to_string(in.shape) +
-                          " was not returned by add_distance_map() or "
-                          "add_inner_spheres() of this engine (" +
-                          std::to_string(views.size()) + " shapes uploaded)");
+                        "shape handle " + std::to_string(in.shape)
+                          + " was not returned by add_distance_map() or "
+                            "add_inner_spheres() of this engine ("
+                          + std::to_string(views.size()) + " shapes uploaded)");
             for (int i = 0; i < 9; ++i)
               if (!finite(in.R[i]))
-                bad_input(where.str(), "the rotation matrix holds a NaN or infinity");
+                bad_input(where.str(),
+                          "the rotation matrix holds a NaN or infinity");
             for (int i = 0; i < 3; ++i)
               if (!finite(in.t[i]))
-                bad_input(where.str(), "the translation holds a NaN or infinity");
+                bad_input(where.str(),
+                          "the translation holds a NaN or infinity");
             // R R^T = I up to float noise: catches scaled or garbage matrices.
             for (int i = 0; i < 3; ++i)
               for (int j = 0; j < 3; ++j)
@@ -93,19 +95,21 @@ namespace particulate
                   for (int k = 0; k < 3; ++k)
                     dot += double(in.R[3 * i + k]) * double(in.R[3 * j + k]);
                   if (std::abs(dot - (i == j ? 1. : 0.)) > 1e-4)
-                    bad_input(where.str(),
-                              "the rotation matrix is not orthonormal (R R^T differs "
-                              "from the identity by more than 1e-4); pass a proper "
-                              "rotation, row-major, body to world");
+                    bad_input(
+                      where.str(),
+                      "the rotation matrix is not orthonormal (R R^T differs "
+                      "from the identity by more than 1e-4); pass a proper "
+                      "rotation, row-major, body to world");
                 }
           }
       }
     };
 
-    ContainmentEngine::ContainmentEngine(const Backend backend, const unsigned cpu_threads)
+    ContainmentEngine::ContainmentEngine(const Backend  backend,
+                                         const unsigned cpu_threads)
       : impl(new Impl)
     {
-      impl->cpu_threads = cpu_threads;
+      impl->cpu_threads      = cpu_threads;
       const bool have_device = cuda_device_available();
       if (backend == Backend::cuda && !have_device)
         throw std::runtime_error(
@@ -114,16 +118,17 @@ namespace particulate
             "is visible; use Backend::cpu or Backend::automatic" :
             "particulate containment: the CUDA backend was requested but this library "
             "was built without CUDA (nvcc was not found at configure time)");
-      impl->backend =
-        (backend == Backend::cpu || !have_device) ? Backend::cpu : Backend::cuda;
+      impl->backend = (backend == Backend::cpu || !have_device) ? Backend::cpu :
+                                                                  Backend::cuda;
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       if (impl->backend == Backend::cuda)
         impl->gpu.reset(new detail::CudaBackend());
 #endif
     }
 
-    ContainmentEngine::~ContainmentEngine()                       = default;
-    ContainmentEngine::ContainmentEngine(ContainmentEngine &&) noexcept = default;
+    ContainmentEngine::~ContainmentEngine() = default;
+    ContainmentEngine::ContainmentEngine(
+      ContainmentEngine &&) noexcept = default;
     ContainmentEngine &
     ContainmentEngine::operator=(ContainmentEngine &&) noexcept = default;
 
@@ -156,8 +161,9 @@ namespace particulate
       if (impl->gpu)
         return impl->gpu->device_name();
 #endif
-      const unsigned t = impl->cpu_threads ? impl->cpu_threads :
-                                             std::max(1u, std::thread::hardware_concurrency());
+      const unsigned t = impl->cpu_threads ?
+                           impl->cpu_threads :
+                           std::max(1u, std::thread::hardware_concurrency());
       return "CPU, " + std::to_string(t) + " thread(s)";
     }
 
@@ -179,27 +185,29 @@ namespace particulate
       const std::string where = "add_distance_map()";
       if (map.nx < 2 || map.ny < 2 || map.nz < 2)
         bad_input(where,
-                  "a distance map needs at least 2 grid points per axis, got " +
-                    std::to_string(map.nx) + " x " + std::to_string(map.ny) + " x " +
-                    std::to_string(map.nz));
+                  "a distance map needs at least 2 grid points per axis, got "
+                    + std::to_string(map.nx) + " x " + std::to_string(map.ny)
+                    + " x " + std::to_string(map.nz));
       const double count = double(map.nx) * map.ny * map.nz;
       if (count > double(std::numeric_limits<int>::max()))
         bad_input(where, "more than 2^31-1 grid points; coarsen the map");
       if (map.values.size() != static_cast<std::size_t>(count))
         bad_input(where,
-                  "values holds " + std::to_string(map.values.size()) +
-                    " samples but nx*ny*nz = " +
-                    std::to_string(static_cast<std::size_t>(count)));
+                  "values holds " + std::to_string(map.values.size())
+                    + " samples but nx*ny*nz = "
+                    + std::to_string(static_cast<std::size_t>(count)));
       for (int a = 0; a < 3; ++a)
         {
           if (!(map.spacing[a] > 0.f) || !finite(map.spacing[a]))
-            bad_input(where, "spacing must be positive and finite along every axis");
+            bad_input(where,
+                      "spacing must be positive and finite along every axis");
           if (!finite(map.origin[a]))
             bad_input(where, "origin holds a NaN or infinity");
         }
       for (std::size_t q = 0; q < map.values.size(); ++q)
         if (!finite(map.values[q]))
-          bad_input(where, "value " + std::to_string(q) + " is NaN or infinite");
+          bad_input(where,
+                    "value " + std::to_string(q) + " is NaN or infinite");
 
       detail::ShapeView v{};
       v.kind = detail::shape_distance_map;
@@ -213,7 +221,8 @@ namespace particulate
           // One reciprocal, rounded once on the host, shared by both paths.
           v.inv_h[a] = 1.f / map.spacing[a];
           box.lo[a]  = map.origin[a];
-          box.hi[a]  = double(map.origin[a]) + double(v.n[a] - 1) / double(v.inv_h[a]);
+          box.hi[a]
+            = double(map.origin[a]) + double(v.n[a] - 1) / double(v.inv_h[a]);
         }
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       if (impl->gpu)
@@ -226,7 +235,7 @@ namespace particulate
         {
           impl->host_shapes.emplace_back(new Impl::HostShape);
           impl->host_shapes.back()->values = map.values;
-          v.values                         = impl->host_shapes.back()->values.data();
+          v.values = impl->host_shapes.back()->values.data();
         }
       impl->views.push_back(v);
       impl->boxes.push_back(box);
@@ -246,14 +255,18 @@ namespace particulate
         bad_input(where, "more than 2^31-1 spheres");
       for (std::size_t q = 0; q < ns; ++q)
         {
-          if (!finite(s.cx[q]) || !finite(s.cy[q]) || !finite(s.cz[q]) || !finite(s.r[q]))
-            bad_input(where, "sphere " + std::to_string(q) + " holds a NaN or infinity");
+          if (!finite(s.cx[q]) || !finite(s.cy[q]) || !finite(s.cz[q])
+              || !finite(s.r[q]))
+            bad_input(where,
+                      "sphere " + std::to_string(q)
+                        + " holds a NaN or infinity");
           if (s.r[q] < 0.f)
-            bad_input(where, "sphere " + std::to_string(q) + " has a negative radius");
+            bad_input(where,
+                      "sphere " + std::to_string(q) + " has a negative radius");
         }
 
       std::unique_ptr<Impl::HostShape> host(new Impl::HostShape);
-      host->grid = detail::build_sphere_grid(s);
+      host->grid                  = detail::build_sphere_grid(s);
       const detail::SphereGrid &g = host->grid;
       detail::ShapeView         v{};
       v.kind = detail::shape_inner_spheres;
@@ -263,8 +276,8 @@ namespace particulate
           v.origin[a] = g.origin[a];
           v.inv_h[a]  = g.inv_h[a];
         }
-      v.cell_start = g.cell_start.data();
-      v.entries    = g.entries.data();
+      v.cell_start          = g.cell_start.data();
+      v.entries             = g.entries.data();
       const detail::Box box = g.box;
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       if (impl->gpu)
@@ -278,15 +291,16 @@ namespace particulate
     }
 
     void
-    ContainmentEngine::classify(const float *        xyz,
-                                const std::size_t    n,
-                                const BodyInstance * bodies,
-                                const std::size_t    m,
-                                int *                first_body,
-                                float *              distance)
+    ContainmentEngine::classify(const float        *xyz,
+                                const std::size_t   n,
+                                const BodyInstance *bodies,
+                                const std::size_t   m,
+                                int                *first_body,
+                                float              *distance)
     {
       if (n > 0 && first_body == nullptr && distance == nullptr)
-        bad_input("classify()", "both outputs are null: pass first_body, distance or both");
+        bad_input("classify()",
+                  "both outputs are null: pass first_body, distance or both");
       if (n > 0 && xyz == nullptr)
         bad_input("classify()", "xyz is null but n > 0");
       if (m > 0 && bodies == nullptr)
@@ -297,26 +311,26 @@ namespace particulate
       if (n == 0)
         return;
 
-      const detail::SceneGrid g = detail::build_scene_grid(bodies, m, impl->boxes);
+      const detail::SceneGrid g
+        = detail::build_scene_grid(bodies, m, impl->views, impl->boxes);
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       if (impl->gpu)
         {
-          impl->gpu->classify(impl->views, g, xyz, n, first_body, distance);
+          impl->gpu->classify(g, xyz, n, first_body, distance);
           return;
         }
 #endif
-      detail::SceneView view;
-      for (int a = 0; a < 3; ++a)
-        {
-          view.n[a]      = g.n[a];
-          view.origin[a] = g.origin[a];
-          view.inv_h[a]  = g.inv_h[a];
-        }
-      view.cell_start = g.cell_start.data();
-      view.body_ids   = g.body_ids.data();
-      view.bodies     = g.bodies.data();
-      view.shapes     = impl->views.data();
-      detail::classify_cpu(view, xyz, n, first_body, distance, impl->cpu_threads);
+      const detail::SceneView view
+        = detail::make_scene_view(g,
+                                  g.bodies.data(),
+                                  g.cell_start.data(),
+                                  g.body_ids.data());
+      detail::classify_cpu(view,
+                           xyz,
+                           n,
+                           first_body,
+                           distance,
+                           impl->cpu_threads);
     }
 
     void
@@ -343,19 +357,20 @@ namespace particulate
     }
 
     double
-    ContainmentEngine::time_kernel(const float *        xyz,
-                                   const std::size_t    n,
-                                   const BodyInstance * bodies,
-                                   const std::size_t    m,
-                                   const bool           with_distance,
-                                   const int            repetitions)
+    ContainmentEngine::time_kernel(const float        *xyz,
+                                   const std::size_t   n,
+                                   const BodyInstance *bodies,
+                                   const std::size_t   m,
+                                   const bool          with_distance,
+                                   const int           repetitions)
     {
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       if (impl->gpu)
         {
           impl->check_bodies(bodies, m);
-          const detail::SceneGrid g = detail::build_scene_grid(bodies, m, impl->boxes);
-          return impl->gpu->time_kernel(impl->views, g, xyz, n, with_distance, repetitions);
+          const detail::SceneGrid g
+            = detail::build_scene_grid(bodies, m, impl->views, impl->boxes);
+          return impl->gpu->time_kernel(g, xyz, n, with_distance, repetitions);
         }
 #else
       (void)xyz;

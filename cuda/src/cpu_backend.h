@@ -6,22 +6,19 @@
 
 #include <cstddef>
 
-namespace particulate
-{
-  namespace cuda
-  {
-    namespace detail
-    {
+namespace particulate {
+  namespace cuda {
+    namespace detail {
       /**
        * Runs classify_point() over n points on `threads` std::threads
        * (contiguous ranges; 0 = all hardware threads). Outputs may be null.
        */
       void
       classify_cpu(const SceneView &scene,
-                   const float *    xyz,
+                   const float     *xyz,
                    std::size_t      n,
-                   int *            first_body,
-                   float *          distance,
+                   int             *first_body,
+                   float           *distance,
                    unsigned         threads);
     } // namespace detail
   }   // namespace cuda

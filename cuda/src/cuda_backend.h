@@ -6,20 +6,18 @@
 
 #include <particulate/cuda/detail/point_query.h>
 
-#include "uniform_grids.h"
-
 #include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace particulate
-{
-  namespace cuda
-  {
-    namespace detail
-    {
-      /** Number of CUDA devices visible, 0 when there is no driver or device. */
+#include "uniform_grids.h"
+
+namespace particulate {
+  namespace cuda {
+    namespace detail {
+      /** Number of CUDA devices visible, 0 when there is no driver or device.
+       */
       int
       cuda_device_count();
 
@@ -36,7 +34,8 @@ namespace particulate
         ~CudaBackend();
         CudaBackend(const CudaBackend &) = delete;
         CudaBackend &
-        operator=(const CudaBackend &) = delete;
+        operator=(const CudaBackend &)
+          = delete;
 
         std::string
         device_name() const;
@@ -55,21 +54,19 @@ namespace particulate
          * the kernel and the copies out of different chunks overlap.
          */
         void
-        classify(const std::vector<ShapeView> &device_shapes,
-                 const SceneGrid &             scene,
-                 const float *                 xyz,
-                 std::size_t                   n,
-                 int *                         first_body,
-                 float *                       distance);
+        classify(const SceneGrid &scene,
+                 const float     *xyz,
+                 std::size_t      n,
+                 int             *first_body,
+                 float           *distance);
 
         /** See ContainmentEngine::time_kernel(). */
         double
-        time_kernel(const std::vector<ShapeView> &device_shapes,
-                    const SceneGrid &             scene,
-                    const float *                 xyz,
-                    std::size_t                   n,
-                    bool                          with_distance,
-                    int                           repetitions);
+        time_kernel(const SceneGrid &scene,
+                    const float     *xyz,
+                    std::size_t      n,
+                    bool             with_distance,
+                    int              repetitions);
 
         /** See ContainmentEngine::measure_copy_bandwidth(). */
         double

@@ -6,14 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-namespace particulate
-{
-  namespace cuda
-  {
-    namespace detail
-    {
-      namespace
-      {
+namespace particulate {
+  namespace cuda {
+    namespace detail {
+      namespace {
         /** Cell layout of a grid plus the safety margin used at insertion. */
         struct Frame
         {
@@ -40,7 +36,7 @@ namespace particulate
          * side.
          */
         Frame
-        make_frame(const Box &       box,
+        make_frame(const Box        &box,
                    double            h,
                    const int         max_per_axis,
                    const std::size_t max_cells)
@@ -63,12 +59,13 @@ namespace particulate
           // that touches an object fall into a cell that does not list it.
           for (;;)
             {
-              f.eps_cells = 1e-3 + 1e-6 * max_abs(box) / h;
+              f.eps_cells       = 1e-3 + 1e-6 * max_abs(box) / h;
               std::size_t total = 1;
               for (int a = 0; a < 3; ++a)
                 {
-                  f.n[a] = std::max(
-                    1, static_cast<int>(std::ceil(ext[a] / h + 4. * f.eps_cells)));
+                  f.n[a] = std::max(1,
+                                    static_cast<int>(std::ceil(
+                                      ext[a] / h + 4. * f.eps_cells)));
                   total *= static_cast<std::size_t>(f.n[a]);
                 }
               if (total <= max_cells)
@@ -77,8 +74,8 @@ namespace particulate
             }
           for (int a = 0; a < 3; ++a)
             {
-              f.origin[a]  = static_cast<float>(box.lo[a] -
-                                               0.5 * (f.n[a] * h - ext[a]));
+              f.origin[a]
+                = static_cast<float>(box.lo[a] - 0.5 * (f.n[a] * h - ext[a]));
               f.inv_h[a]   = static_cast<float>(1. / h);
               f.h_query[a] = 1. / static_cast<double>(f.inv_h[a]);
             }
@@ -94,8 +91,8 @@ namespace particulate
                    const int    a,
                    const double lo,
                    const double hi,
-                   int &        i0,
-                   int &        i1)
+                   int         &i0,
+                   int         &i1)
         {
           const double o  = f.origin[a];
           const double u0 = (lo - o) * f.inv_h[a] - f.eps_cells;
@@ -131,15 +128,16 @@ namespace particulate
           }
         // Cell edge about one sphere diameter: a sphere then touches at most
         // 8 cells and a cell is touched by a handful of spheres.
-        const Frame f = make_frame(g.box, 2. * r_sum / ns, 1024, std::size_t(1) << 22);
+        const Frame f
+          = make_frame(g.box, 2. * r_sum / ns, 1024, std::size_t(1) << 22);
         for (int a = 0; a < 3; ++a)
           {
             g.n[a]      = f.n[a];
             g.origin[a] = f.origin[a];
             g.inv_h[a]  = f.inv_h[a];
           }
-        const std::size_t n_cells =
-          std::size_t(f.n[0]) * std::size_t(f.n[1]) * std::size_t(f.n[2]);
+        const std::size_t n_cells
+          = std::size_t(f.n[0]) * std::size_t(f.n[1]) * std::size_t(f.n[2]);
 
         // Two passes (count, then fill) give a compact CSR layout.
         std::vector<int> count(n_cells + 1, 0);
@@ -154,7 +152,8 @@ namespace particulate
                   throw std::invalid_argument(
                     "add_inner_spheres: the sphere grid would hold more than "
                     "2^31 entries; use fewer or smaller spheres.");
-                g.entries.resize(static_cast<std::size_t>(g.cell_start[n_cells]));
+                g.entries.resize(
+                  static_cast<std::size_t>(g.cell_start[n_cells]));
                 std::fill(count.begin(), count.end(), 0);
               }
             for (std::size_t q = 0; q < ns; ++q)
@@ -164,7 +163,8 @@ namespace particulate
                 int          i0[3], i1[3];
                 bool         any = true;
                 for (int a = 0; a < 3; ++a)
-                  any = any && cell_range(f, a, c[a] - r, c[a] + r, i0[a], i1[a]);
+                  any
+                    = any && cell_range(f, a, c[a] - r, c[a] + r, i0[a], i1[a]);
                 if (!any)
                   continue;
                 const double margin = f.eps_cells * f.h_query[0];
@@ -178,37 +178,70 @@ namespace particulate
                         double    d2     = 0.;
                         for (int a = 0; a < 3; ++a)
                           {
-                            const double lo = f.origin[a] + idx[a] * f.h_query[a];
+                            const double lo
+                              = f.origin[a] + idx[a] * f.h_query[a];
                             const double hi = lo + f.h_query[a];
-                            const double e  = std::max({lo - c[a], 0., c[a] - hi});
+                            const double e
+                              = std::max({lo - c[a], 0., c[a] - hi});
                             d2 += e * e;
                           }
                         if (d2 > reach2)
                           continue;
-                        const std::size_t cell =
-                          i + std::size_t(f.n[0]) * (j + std::size_t(f.n[1]) * k);
+                        const std::size_t cell
+                          = i
+                            + std::size_t(f.n[0])
+                                * (j + std::size_t(f.n[1]) * k);
                         if (pass == 1)
                           {
                             const float rf = s.r[q];
-                            g.entries[g.cell_start[cell] + count[cell]] =
-                              SphereEntry{s.cx[q], s.cy[q], s.cz[q], rf * rf};
+                            g.entries[g.cell_start[cell] + count[cell]]
+                              = SphereEntry{s.cx[q], s.cy[q], s.cz[q], rf * rf};
                           }
                         ++count[cell];
                       }
               }
           }
+        // Nearest spheres first: a point inside the body usually lies in the
+        // sphere closest to its cell's centre, so the scan stops early. Any
+        // order gives the same answer; this one only makes it faster.
+        for (std::size_t cell = 0; cell < n_cells; ++cell)
+          {
+            const int i = static_cast<int>(cell % std::size_t(f.n[0]));
+            const int j = static_cast<int>((cell / std::size_t(f.n[0]))
+                                           % std::size_t(f.n[1]));
+            const int k = static_cast<int>(
+              cell / (std::size_t(f.n[0]) * std::size_t(f.n[1])));
+            const double cc[3] = {f.origin[0] + (i + 0.5) * f.h_query[0],
+                                  f.origin[1] + (j + 0.5) * f.h_query[1],
+                                  f.origin[2] + (k + 0.5) * f.h_query[2]};
+            auto         key   = [&](const SphereEntry &e) {
+              const double dx = e.x - cc[0], dy = e.y - cc[1], dz = e.z - cc[2];
+              // Depth of the cell centre inside the sphere, larger first.
+              return std::sqrt(double(e.r2))
+                     - std::sqrt(dx * dx + dy * dy + dz * dz);
+            };
+            std::stable_sort(g.entries.begin() + g.cell_start[cell],
+                             g.entries.begin() + g.cell_start[cell + 1],
+                             [&](const SphereEntry &a, const SphereEntry &b) {
+                               return key(a) > key(b);
+                             });
+          }
         return g;
       }
 
       SceneGrid
-      build_scene_grid(const BodyInstance *    bodies,
-                       const std::size_t       m,
-                       const std::vector<Box> &shape_boxes)
+      build_scene_grid(const BodyInstance           *bodies,
+                       const std::size_t             m,
+                       const std::vector<ShapeView> &shape_views,
+                       const std::vector<Box>       &shape_boxes)
       {
         SceneGrid g;
+        g.n_direct
+          = m <= std::size_t(max_direct_bodies) ? static_cast<int>(m) : 0;
         g.bodies.resize(m);
-        std::vector<Box> world(m);
-        Box              all;
+        std::vector<Box>    world(m);
+        std::vector<double> pads(m);
+        Box                 all;
         for (int a = 0; a < 3; ++a)
           {
             all.lo[a] = HUGE_VAL;
@@ -218,15 +251,14 @@ namespace particulate
         for (std::size_t b = 0; b < m; ++b)
           {
             const BodyInstance &in = bodies[b];
-            BodyView &          v  = g.bodies[b];
+            BodyView           &v  = g.bodies[b];
             std::copy(in.R, in.R + 9, v.R);
             std::copy(in.t, in.t + 3, v.t);
-            v.shape = in.shape;
-            v.pad[0] = v.pad[1] = v.pad[2] = 0;
+            v.shape = shape_views[static_cast<std::size_t>(in.shape)];
 
             // World box of the rotated shape box: x_w = R x_b + t.
             const Box &sb = shape_boxes[static_cast<std::size_t>(in.shape)];
-            Box &      wb = world[b];
+            Box       &wb = world[b];
             for (int a = 0; a < 3; ++a)
               {
                 wb.lo[a] = HUGE_VAL;
@@ -239,9 +271,10 @@ namespace particulate
                                       (corner & 4) ? sb.hi[2] : sb.lo[2]};
                 for (int a = 0; a < 3; ++a)
                   {
-                    const double xw = double(in.R[3 * a]) * xb[0] +
-                                      double(in.R[3 * a + 1]) * xb[1] +
-                                      double(in.R[3 * a + 2]) * xb[2] + in.t[a];
+                    const double xw = double(in.R[3 * a]) * xb[0]
+                                      + double(in.R[3 * a + 1]) * xb[1]
+                                      + double(in.R[3 * a + 2]) * xb[2]
+                                      + in.t[a];
                     wb.lo[a] = std::min(wb.lo[a], xw);
                     wb.hi[a] = std::max(wb.hi[a], xw);
                   }
@@ -251,8 +284,10 @@ namespace particulate
             double diag2 = 0.;
             for (int a = 0; a < 3; ++a)
               diag2 += (sb.hi[a] - sb.lo[a]) * (sb.hi[a] - sb.lo[a]);
-            const double pad = 1e-5 * (std::sqrt(diag2) + max_abs(wb) + max_abs(sb));
-            double       ext = 0.;
+            const double pad
+              = 1e-5 * (std::sqrt(diag2) + max_abs(wb) + max_abs(sb));
+            pads[b]    = pad;
+            double ext = 0.;
             for (int a = 0; a < 3; ++a)
               {
                 wb.lo[a] -= pad;
@@ -277,17 +312,19 @@ namespace particulate
             return g;
           }
 
-        // Cell edge about the mean body size: a point then meets a few
-        // candidate bodies, whatever their number.
-        const Frame f = make_frame(all, h_sum / m, 256, std::size_t(1) << 18);
+        // Cell edge about a quarter of the mean body size: a point then
+        // meets one or two candidate bodies, whatever their number, and a
+        // body spans only a few cells per axis.
+        const Frame f
+          = make_frame(all, 0.25 * h_sum / m, 256, std::size_t(1) << 18);
         for (int a = 0; a < 3; ++a)
           {
             g.n[a]      = f.n[a];
             g.origin[a] = f.origin[a];
             g.inv_h[a]  = f.inv_h[a];
           }
-        const std::size_t n_cells =
-          std::size_t(f.n[0]) * std::size_t(f.n[1]) * std::size_t(f.n[2]);
+        const std::size_t n_cells
+          = std::size_t(f.n[0]) * std::size_t(f.n[1]) * std::size_t(f.n[2]);
         std::vector<int> count(n_cells + 1, 0);
         for (int pass = 0; pass < 2; ++pass)
           {
@@ -296,7 +333,8 @@ namespace particulate
                 g.cell_start.assign(n_cells + 1, 0);
                 for (std::size_t c = 0; c < n_cells; ++c)
                   g.cell_start[c + 1] = g.cell_start[c] + count[c];
-                g.body_ids.resize(static_cast<std::size_t>(g.cell_start[n_cells]));
+                g.body_ids.resize(
+                  static_cast<std::size_t>(g.cell_start[n_cells]));
                 std::fill(count.begin(), count.end(), 0);
               }
             // Bodies in increasing order, so every cell lists them sorted.
@@ -305,24 +343,83 @@ namespace particulate
                 int  i0[3], i1[3];
                 bool any = true;
                 for (int a = 0; a < 3; ++a)
-                  any = any &&
-                        cell_range(f, a, world[b].lo[a], world[b].hi[a], i0[a], i1[a]);
+                  any = any
+                        && cell_range(f,
+                                      a,
+                                      world[b].lo[a],
+                                      world[b].hi[a],
+                                      i0[a],
+                                      i1[a]);
                 if (!any)
                   continue;
+                // The world box of a rotated body is loose; keep only cells
+                // whose bounding sphere reaches the body's own (oriented)
+                // box, widened by the same padding as the world box.
+                const BodyInstance &in = bodies[b];
+                const Box &sb = shape_boxes[static_cast<std::size_t>(in.shape)];
+                const double half_diag
+                  = 0.5
+                    * std::sqrt(f.h_query[0] * f.h_query[0]
+                                + f.h_query[1] * f.h_query[1]
+                                + f.h_query[2] * f.h_query[2]);
+                const double reach
+                  = half_diag + pads[b] + f.eps_cells * f.h_query[0];
                 for (int k = i0[2]; k <= i1[2]; ++k)
                   for (int j = i0[1]; j <= i1[1]; ++j)
                     for (int i = i0[0]; i <= i1[0]; ++i)
                       {
-                        const std::size_t cell =
-                          i + std::size_t(f.n[0]) * (j + std::size_t(f.n[1]) * k);
+                        const double c[3]
+                          = {f.origin[0] + (i + 0.5) * f.h_query[0],
+                             f.origin[1] + (j + 0.5) * f.h_query[1],
+                             f.origin[2] + (k + 0.5) * f.h_query[2]};
+                        const double d[3]
+                          = {c[0] - in.t[0], c[1] - in.t[1], c[2] - in.t[2]};
+                        double out2 = 0.;
+                        for (int a = 0; a < 3; ++a)
+                          {
+                            const double xb = double(in.R[a]) * d[0]
+                                              + double(in.R[3 + a]) * d[1]
+                                              + double(in.R[6 + a]) * d[2];
+                            const double e
+                              = std::max({sb.lo[a] - xb, 0., xb - sb.hi[a]});
+                            out2 += e * e;
+                          }
+                        if (out2 > reach * reach)
+                          continue;
+                        const std::size_t cell
+                          = i
+                            + std::size_t(f.n[0])
+                                * (j + std::size_t(f.n[1]) * k);
                         if (pass == 1)
-                          g.body_ids[g.cell_start[cell] + count[cell]] =
-                            static_cast<int>(b);
+                          g.body_ids[g.cell_start[cell] + count[cell]]
+                            = static_cast<int>(b);
                         ++count[cell];
                       }
               }
           }
         return g;
+      }
+
+      SceneView
+      make_scene_view(const SceneGrid &g,
+                      const BodyView  *bodies,
+                      const int       *cell_start,
+                      const int       *body_ids)
+      {
+        SceneView v{};
+        for (int a = 0; a < 3; ++a)
+          {
+            v.n[a]      = g.n[a];
+            v.origin[a] = g.origin[a];
+            v.inv_h[a]  = g.inv_h[a];
+          }
+        v.n_direct   = g.n_direct;
+        v.cell_start = cell_start;
+        v.body_ids   = body_ids;
+        v.bodies     = bodies;
+        for (int b = 0; b < g.n_direct; ++b)
+          v.direct[b] = g.bodies[static_cast<std::size_t>(b)];
+        return v;
       }
     } // namespace detail
   }   // namespace cuda

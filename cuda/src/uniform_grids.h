@@ -12,12 +12,9 @@
 #include <array>
 #include <vector>
 
-namespace particulate
-{
-  namespace cuda
-  {
-    namespace detail
-    {
+namespace particulate {
+  namespace cuda {
+    namespace detail {
       /** Axis-aligned box in double precision [m]. */
       struct Box
       {
@@ -50,6 +47,7 @@ namespace particulate
         int                   n[3];
         float                 origin[3];
         float                 inv_h[3];
+        int                   n_direct; // see SceneView::n_direct
         std::vector<int>      cell_start;
         std::vector<int>      body_ids;
         std::vector<BodyView> bodies;
@@ -60,12 +58,25 @@ namespace particulate
        *
        * @param bodies       the bodies of the call.
        * @param m            their number.
+       * @param shape_views  view of each shape (host or device pointers),
+       *                     copied into the body records.
        * @param shape_boxes  body-frame box of each shape, indexed by handle.
        */
       SceneGrid
-      build_scene_grid(const BodyInstance *     bodies,
-                       std::size_t              m,
-                       const std::vector<Box> & shape_boxes);
+      build_scene_grid(const BodyInstance           *bodies,
+                       std::size_t                   m,
+                       const std::vector<ShapeView> &shape_views,
+                       const std::vector<Box>       &shape_boxes);
+
+      /**
+       * The SceneView of a grid whose arrays live at the given addresses
+       * (host or device); copies the first bodies into SceneView::direct.
+       */
+      SceneView
+      make_scene_view(const SceneGrid &g,
+                      const BodyView  *bodies,
+                      const int       *cell_start,
+                      const int       *body_ids);
     } // namespace detail
   }   // namespace cuda
 } // namespace particulate

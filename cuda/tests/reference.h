@@ -8,16 +8,13 @@
 #include <particulate/cuda/containment_engine.h>
 #include <particulate/cuda/detail/point_query.h>
 
-#include "test_scenes.h"
-
 #include <vector>
 
-namespace particulate
-{
-  namespace cuda
-  {
-    namespace testing
-    {
+#include "test_scenes.h"
+
+namespace particulate {
+  namespace cuda {
+    namespace testing {
       /** A shape kept on the test side, with its engine handle. */
       struct TestShape
       {
@@ -32,19 +29,20 @@ namespace particulate
       {
         for (std::size_t i = 0; i < shapes.size(); ++i)
           {
-            const int h = shapes[i].is_map ? engine.add_distance_map(shapes[i].map) :
-                                             engine.add_inner_spheres(shapes[i].spheres);
+            const int h = shapes[i].is_map ?
+                            engine.add_distance_map(shapes[i].map) :
+                            engine.add_inner_spheres(shapes[i].spheres);
             if (h != static_cast<int>(i))
               std::abort();
           }
       }
 
       inline void
-      reference_classify(const std::vector<TestShape> &   shapes,
+      reference_classify(const std::vector<TestShape>    &shapes,
                          const std::vector<BodyInstance> &bodies,
-                         const std::vector<float> &       xyz,
-                         std::vector<int> &               first,
-                         std::vector<float> &             dist)
+                         const std::vector<float>        &xyz,
+                         std::vector<int>                &first,
+                         std::vector<float>              &dist)
       {
         using namespace detail;
         const std::size_t n = xyz.size() / 3;
@@ -55,7 +53,7 @@ namespace particulate
           if (shapes[s].is_map)
             {
               const DistanceMapData &m = shapes[s].map;
-              ShapeView &            v = views[s];
+              ShapeView             &v = views[s];
               v.kind                   = shape_distance_map;
               v.n[0]                   = m.nx;
               v.n[1]                   = m.ny;
@@ -73,8 +71,15 @@ namespace particulate
               BodyView bv;
               std::copy(bodies[b].R, bodies[b].R + 9, bv.R);
               std::copy(bodies[b].t, bodies[b].t + 3, bv.t);
+              bv.shape = views[bodies[b].shape];
               float bx, by, bz;
-              to_body_frame(bv, xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2], bx, by, bz);
+              to_body_frame(bv,
+                            xyz[3 * p],
+                            xyz[3 * p + 1],
+                            xyz[3 * p + 2],
+                            bx,
+                            by,
+                            bz);
               const TestShape &s = shapes[bodies[b].shape];
               if (s.is_map)
                 {
@@ -94,7 +99,8 @@ namespace particulate
                       const float dx = fsub(bx, sp.cx[q]);
                       const float dy = fsub(by, sp.cy[q]);
                       const float dz = fsub(bz, sp.cz[q]);
-                      const float d2 = fadd(fadd(fmul(dx, dx), fmul(dy, dy)), fmul(dz, dz));
+                      const float d2
+                        = fadd(fadd(fmul(dx, dx), fmul(dy, dy)), fmul(dz, dz));
                       if (d2 <= fmul(sp.r[q], sp.r[q]))
                         {
                           first[p] = static_cast<int>(b);
@@ -111,10 +117,10 @@ namespace particulate
        * random pack), bodies cycle through them with random poses.
        */
       inline void
-      mixed_scene(std::mt19937 &             rng,
+      mixed_scene(std::mt19937              &rng,
                   const int                  m,
                   const double               body_size,
-                  std::vector<TestShape> &   shapes,
+                  std::vector<TestShape>    &shapes,
                   std::vector<BodyInstance> &bodies)
       {
         const double s    = body_size; // half extent of the shapes
@@ -124,10 +130,12 @@ namespace particulate
         shapes[0].map = sample_map(sphere_sdf(0.7 * s), s, nmap);
         shapes[1].map = sample_map(torus_sdf(0.6 * s, 0.25 * s), s, nmap);
         shapes[2].map = sample_map(box_sdf(0.8 * s, 0.5 * s, 0.3 * s), s, nmap);
-        shapes[3].is_map  = false;
-        shapes[3].spheres = carve_spheres(torus_sdf(0.6 * s, 0.3 * s), s, s / 12);
-        shapes[4].is_map  = false;
-        shapes[4].spheres = random_sphere_pack(rng, 300, 0.7 * s, 0.02 * s, 0.25 * s);
+        shapes[3].is_map = false;
+        shapes[3].spheres
+          = carve_spheres(torus_sdf(0.6 * s, 0.3 * s), s, s / 12);
+        shapes[4].is_map = false;
+        shapes[4].spheres
+          = random_sphere_pack(rng, 300, 0.7 * s, 0.02 * s, 0.25 * s);
         std::uniform_real_distribution<double> u(0., 1.);
         bodies.assign(m, BodyInstance());
         for (int b = 0; b < m; ++b)

@@ -14,12 +14,9 @@
 #include <random>
 #include <vector>
 
-namespace particulate
-{
-  namespace cuda
-  {
-    namespace testing
-    {
+namespace particulate {
+  namespace cuda {
+    namespace testing {
       /** A signed distance function of a body-frame point [m]. */
       using Sdf = std::function<double(double, double, double)>;
 
@@ -36,10 +33,12 @@ namespace particulate
       box_sdf(const double a, const double b, const double c)
       {
         return [=](double x, double y, double z) {
-          const double qx = std::abs(x) - a, qy = std::abs(y) - b, qz = std::abs(z) - c;
-          const double ox = std::max(qx, 0.), oy = std::max(qy, 0.), oz = std::max(qz, 0.);
-          return std::sqrt(ox * ox + oy * oy + oz * oz) +
-                 std::min(std::max({qx, qy, qz}), 0.);
+          const double qx = std::abs(x) - a, qy = std::abs(y) - b,
+                       qz = std::abs(z) - c;
+          const double ox = std::max(qx, 0.), oy = std::max(qy, 0.),
+                       oz = std::max(qz, 0.);
+          return std::sqrt(ox * ox + oy * oy + oz * oz)
+                 + std::min(std::max({qx, qy, qz}), 0.);
         };
       }
 
@@ -72,10 +71,11 @@ namespace particulate
         for (int k = 0; k < n; ++k)
           for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
-              m.values[i + std::size_t(n) * (j + std::size_t(n) * k)] =
-                static_cast<float>(sdf(double(m.origin[0]) + i * double(m.spacing[0]),
-                                       double(m.origin[1]) + j * double(m.spacing[1]),
-                                       double(m.origin[2]) + k * double(m.spacing[2])));
+              m.values[i + std::size_t(n) * (j + std::size_t(n) * k)]
+                = static_cast<float>(
+                  sdf(double(m.origin[0]) + i * double(m.spacing[0]),
+                      double(m.origin[1]) + j * double(m.spacing[1]),
+                      double(m.origin[2]) + k * double(m.spacing[2])));
         return m;
       }
 
@@ -95,7 +95,8 @@ namespace particulate
           for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i)
               {
-                const double x = -half + (i + 0.5) * h, y = -half + (j + 0.5) * h,
+                const double x = -half + (i + 0.5) * h,
+                             y = -half + (j + 0.5) * h,
                              z = -half + (k + 0.5) * h;
                 if (sdf(x, y, z) <= -r)
                   {
@@ -108,7 +109,8 @@ namespace particulate
         return s;
       }
 
-      /** count random spheres, radii in [rmin, rmax], centres in [-half, half]^3. */
+      /** count random spheres, radii in [rmin, rmax], centres in [-half,
+       * half]^3. */
       inline InnerSphereData
       random_sphere_pack(std::mt19937 &rng,
                          const int     count,
@@ -135,27 +137,40 @@ namespace particulate
         std::uniform_real_distribution<double> u(0., 1.);
         const double u1 = u(rng), u2 = u(rng), u3 = u(rng);
         const double a = std::sqrt(1. - u1), b = std::sqrt(u1);
-        const double w = a * std::sin(2. * M_PI * u2), x = a * std::cos(2. * M_PI * u2),
-                     y = b * std::sin(2. * M_PI * u3), z = b * std::cos(2. * M_PI * u3);
-        const double m[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
-                             2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
-                             2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)};
+        const double w    = a * std::sin(2. * M_PI * u2),
+                     x    = a * std::cos(2. * M_PI * u2),
+                     y    = b * std::sin(2. * M_PI * u3),
+                     z    = b * std::cos(2. * M_PI * u3);
+        const double m[9] = {1 - 2 * (y * y + z * z),
+                             2 * (x * y - z * w),
+                             2 * (x * z + y * w),
+                             2 * (x * y + z * w),
+                             1 - 2 * (x * x + z * z),
+                             2 * (y * z - x * w),
+                             2 * (x * z - y * w),
+                             2 * (y * z + x * w),
+                             1 - 2 * (x * x + y * y)};
         for (int i = 0; i < 9; ++i)
           R[i] = static_cast<float>(m[i]);
       }
 
-      /** Body-frame coordinates of a world point, in double (for references). */
+      /** Body-frame coordinates of a world point, in double (for references).
+       */
       inline void
       to_body_double(const BodyInstance &b, const double x[3], double xb[3])
       {
         const double d[3] = {x[0] - b.t[0], x[1] - b.t[1], x[2] - b.t[2]};
         for (int i = 0; i < 3; ++i)
-          xb[i] = double(b.R[i]) * d[0] + double(b.R[3 + i]) * d[1] + double(b.R[6 + i]) * d[2];
+          xb[i] = double(b.R[i]) * d[0] + double(b.R[3 + i]) * d[1]
+                  + double(b.R[6 + i]) * d[2];
       }
 
       /** n random points, uniform in [lo, hi]^3, interleaved xyz. */
       inline std::vector<float>
-      random_points(std::mt19937 &rng, const std::size_t n, const double lo, const double hi)
+      random_points(std::mt19937     &rng,
+                    const std::size_t n,
+                    const double      lo,
+                    const double      hi)
       {
         std::uniform_real_distribution<double> u(lo, hi);
         std::vector<float>                     p(3 * n);
@@ -164,7 +179,8 @@ namespace particulate
         return p;
       }
 
-      /** The (n x n x n) lattice of the unit cube, x fastest, interleaved xyz. */
+      /** The (n x n x n) lattice of the unit cube, x fastest, interleaved xyz.
+       */
       inline std::vector<float>
       unit_cube_lattice(const int n)
       {
@@ -189,18 +205,17 @@ namespace particulate
         return f;
       }
 
-#define PARTICULATE_CHECK(cond, ...)                                              \
-  do                                                                              \
-    {                                                                             \
-      if (!(cond))                                                                \
-        {                                                                         \
-          std::printf("FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);           \
-          std::printf(__VA_ARGS__);                                               \
-          std::printf("\n");                                                      \
-          ++::particulate::cuda::testing::failures();                             \
-        }                                                                         \
-    }                                                                             \
-  while (false)
+#define PARTICULATE_CHECK(cond, ...)                                    \
+  do                                                                    \
+    {                                                                   \
+      if (!(cond))                                                      \
+        {                                                               \
+          std::printf("FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond); \
+          std::printf(__VA_ARGS__);                                     \
+          std::printf("\n");                                            \
+          ++::particulate::cuda::testing::failures();                   \
+        }                                                               \
+  } while (false)
     } // namespace testing
   }   // namespace cuda
 } // namespace particulate

@@ -7,14 +7,13 @@
 #include <memory>
 #include <string>
 
-namespace particulate
-{
-  namespace cuda
-  {
+namespace particulate {
+  namespace cuda {
     /** Where ContainmentEngine does its work. */
     enum class Backend
     {
-      /** CUDA when the library was built with it and a device is present, else CPU. */
+      /** CUDA when the library was built with it and a device is present, else
+         CPU. */
       automatic,
       /** The CPU path (std::thread over points). */
       cpu,
@@ -57,7 +56,7 @@ namespace particulate
        * @param backend      where to compute (see Backend).
        * @param cpu_threads  threads of the CPU path; 0 = all hardware threads.
        */
-      explicit ContainmentEngine(Backend backend     = Backend::automatic,
+      explicit ContainmentEngine(Backend  backend     = Backend::automatic,
                                  unsigned cpu_threads = 0);
       ~ContainmentEngine();
       ContainmentEngine(ContainmentEngine &&) noexcept;
@@ -65,7 +64,8 @@ namespace particulate
       operator=(ContainmentEngine &&) noexcept;
       ContainmentEngine(const ContainmentEngine &) = delete;
       ContainmentEngine &
-      operator=(const ContainmentEngine &) = delete;
+      operator=(const ContainmentEngine &)
+        = delete;
 
       /** Whether this library was compiled with its CUDA sources. */
       static bool
@@ -79,7 +79,8 @@ namespace particulate
       Backend
       backend() const;
 
-      /** A human-readable name of the device ("NVIDIA H100 ...", or "CPU, 16 threads"). */
+      /** A human-readable name of the device ("NVIDIA H100 ...", or "CPU, 16
+       * threads"). */
       std::string
       device_name() const;
 
@@ -111,7 +112,8 @@ namespace particulate
       /**
        * Classifies n world points against m bodies.
        *
-       * @param xyz        3n floats, point p at xyz[3p], xyz[3p+1], xyz[3p+2] [m].
+       * @param xyz        3n floats, point p at xyz[3p], xyz[3p+1], xyz[3p+2]
+       * [m].
        * @param n          number of points (any, 0 included).
        * @param bodies     m bodies: shape handle and pose.
        * @param m          number of bodies.
@@ -126,12 +128,12 @@ namespace particulate
        * pin_host_memory(); pageable memory works too, only slower.
        */
       void
-      classify(const float *       xyz,
+      classify(const float        *xyz,
                std::size_t         n,
                const BodyInstance *bodies,
                std::size_t         m,
-               int *               first_body,
-               float *             distance);
+               int                *first_body,
+               float              *distance);
 
       /**
        * Page-locks host memory for fast asynchronous transfers (CUDA path;
@@ -151,7 +153,7 @@ namespace particulate
        * points with CUDA events and returns the fastest, in milliseconds.
        */
       double
-      time_kernel(const float *       xyz,
+      time_kernel(const float        *xyz,
                   std::size_t         n,
                   const BodyInstance *bodies,
                   std::size_t         m,

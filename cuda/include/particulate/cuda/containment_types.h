@@ -11,10 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-namespace particulate
-{
-  namespace cuda
-  {
+namespace particulate {
+  namespace cuda {
     /**
      * A signed distance map sampled on a Cartesian grid in the body frame
      * (thesis §3.4.2, algorithm 5).

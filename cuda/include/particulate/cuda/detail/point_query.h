@@ -18,23 +18,37 @@
 #else
 #  define PARTICULATE_HD inline
 #endif
+#if defined(__CUDA_ARCH__)
+#  define PARTICULATE_UNROLL _Pragma("unroll")
+#else
+#  define PARTICULATE_UNROLL
+#endif
 
 #include <cmath>
 
-namespace particulate
-{
-  namespace cuda
-  {
-    namespace detail
-    {
+namespace particulate {
+  namespace cuda {
+    namespace detail {
       /** Shape kinds stored in ShapeView::kind. */
       enum ShapeKind : int
       {
-        shape_distance_map = 0,
+        shape_distance_map  = 0,
         shape_inner_spheres = 1
       };
 
-      /** One inner sphere as stored in a grid cell: centre [m], radius^2 [m^2]. */
+      /**
+       * The four samples of a distance map at (i,j), (i+1,j), (i,j+1),
+       * (i+1,j+1) of one k layer, stored together so that the device reads
+       * a cell's eight corners with two 16-byte loads instead of eight
+       * scalar ones (the same values, so the same result).
+       */
+      struct alignas(16) Quad
+      {
+        float v00, v10, v01, v11;
+      };
+
+      /** One inner sphere as stored in a grid cell: centre [m], radius^2 [m^2].
+       */
       struct alignas(16) SphereEntry
       {
         float x, y, z, r2;
@@ -45,7 +59,8 @@ namespace particulate
        * pointers in the CUDA path and host pointers in the CPU path.
        *
        * Distance map: n = grid points per axis, origin = first grid point,
-       * inv_h = 1/spacing, values = the samples.
+       * inv_h = 1/spacing, values = the samples (CPU path) or, when quads
+       * is set (CUDA path), the samples regrouped by Quad.
        * Inner spheres: a uniform grid over the spheres' bounding box in the
        * body frame: n = cells per axis, origin = its lower corner, inv_h =
        * 1/cell size; cell c holds the spheres that touch it,
@@ -57,35 +72,56 @@ namespace particulate
         int                n[3];
         float              origin[3];
         float              inv_h[3];
-        const float *      values;
-        const int *        cell_start;
+        const float       *values;
+        const Quad        *quads;
+        const int         *cell_start;
         const SphereEntry *entries;
       };
 
-      /** A body in the scene: pose (body -> world) and shape index. 64 bytes. */
+      /**
+       * A body in the scene: pose (body -> world) and a copy of its shape's
+       * view, so that a candidate body costs one 128-byte record and no
+       * second indirection through a shape table.
+       */
       struct alignas(16) BodyView
       {
-        float R[9];
-        float t[3];
-        int   shape;
-        int   pad[3];
+        float     R[9];
+        float     t[3];
+        ShapeView shape;
       };
+      static_assert(sizeof(BodyView) == 128, "BodyView is one 128-byte record");
 
       /**
-       * One classification call: the bodies, the shapes they refer to and a
-       * uniform world-space grid over the bodies' bounding boxes (a broad
-       * phase, thesis §5.4.2 / algorithm 9) whose cell c lists the candidate
-       * bodies body_ids[cell_start[c] .. cell_start[c+1]) in increasing order.
+       * One classification call: the bodies and a uniform world-space grid
+       * over their bounding boxes (a broad phase, thesis §5.4.2 / algorithm
+       * 9) whose cell c lists the candidate bodies
+       * body_ids[cell_start[c] .. cell_start[c+1]) in increasing order.
+       *
+       * With few bodies (n_direct > 0) the grid is skipped and every point
+       * tries bodies 0 .. n_direct-1 in turn: all threads of a warp then read
+       * the same body record, and the chain of dependent loads per point
+       * shrinks to the point itself and the map samples. Both modes give the
+       * same result, because the grid only ever drops bodies whose box
+       * cannot hold the point, and bodies are visited in increasing order.
        */
+      /** Bodies up to which SceneView::n_direct is used instead of the grid. */
+      constexpr int max_direct_bodies = 4;
+
       struct SceneView
       {
-        int              n[3];
-        float            origin[3];
-        float            inv_h[3];
-        const int *      cell_start;
-        const int *      body_ids;
-        const BodyView * bodies;
-        const ShapeView *shapes;
+        int             n[3];
+        float           origin[3];
+        float           inv_h[3];
+        int             n_direct;
+        const int      *cell_start;
+        const int      *body_ids;
+        const BodyView *bodies;
+        /**
+         * Copies of bodies 0 .. n_direct-1. The SceneView is the kernel's
+         * argument, so on the device these records are read through the
+         * constant cache, broadcast to the warp, instead of through L1.
+         */
+        BodyView direct[max_direct_bodies];
       };
 
       PARTICULATE_HD float
@@ -145,6 +181,17 @@ namespace particulate
 #endif
       }
 
+      PARTICULATE_HD Quad
+      load_ro(const Quad *p)
+      {
+#if defined(__CUDA_ARCH__)
+        const float4 v = __ldg(reinterpret_cast<const float4 *>(p));
+        return Quad{v.x, v.y, v.z, v.w};
+#else
+        return *p;
+#endif
+      }
+
       PARTICULATE_HD SphereEntry
       load_ro(const SphereEntry *p)
       {
@@ -175,9 +222,9 @@ namespace particulate
                     const float     x,
                     const float     y,
                     const float     z,
-                    float &         bx,
-                    float &         by,
-                    float &         bz)
+                    float          &bx,
+                    float          &by,
+                    float          &bz)
       {
         const float dx = fsub(x, b.t[0]);
         const float dy = fsub(y, b.t[1]);
@@ -198,42 +245,56 @@ namespace particulate
                    const float      bx,
                    const float      by,
                    const float      bz,
-                   float &          d)
+                   float           &d)
       {
         const float u = fmul(fsub(bx, s.origin[0]), s.inv_h[0]);
         const float v = fmul(fsub(by, s.origin[1]), s.inv_h[1]);
         const float w = fmul(fsub(bz, s.origin[2]), s.inv_h[2]);
         // Inclusive box in index space; NaN fails every comparison.
-        if (!(u >= 0.f && u <= static_cast<float>(s.n[0] - 1) && v >= 0.f &&
-              v <= static_cast<float>(s.n[1] - 1) && w >= 0.f &&
-              w <= static_cast<float>(s.n[2] - 1)))
+        if (!(u >= 0.f && u <= static_cast<float>(s.n[0] - 1) && v >= 0.f
+              && v <= static_cast<float>(s.n[1] - 1) && w >= 0.f
+              && w <= static_cast<float>(s.n[2] - 1)))
           return false;
         // The last layer of points belongs to the last cell (fraction 1).
-        const int   i  = static_cast<int>(u) < s.n[0] - 2 ?
-                           static_cast<int>(u) :
-                           s.n[0] - 2;
-        const int   j  = static_cast<int>(v) < s.n[1] - 2 ?
-                           static_cast<int>(v) :
-                           s.n[1] - 2;
-        const int   k  = static_cast<int>(w) < s.n[2] - 2 ?
-                           static_cast<int>(w) :
-                           s.n[2] - 2;
+        const int i
+          = static_cast<int>(u) < s.n[0] - 2 ? static_cast<int>(u) : s.n[0] - 2;
+        const int j
+          = static_cast<int>(v) < s.n[1] - 2 ? static_cast<int>(v) : s.n[1] - 2;
+        const int k
+          = static_cast<int>(w) < s.n[2] - 2 ? static_cast<int>(w) : s.n[2] - 2;
         const float fx = fsub(u, static_cast<float>(i));
         const float fy = fsub(v, static_cast<float>(j));
         const float fz = fsub(w, static_cast<float>(k));
 
-        const int    sx  = 1;
-        const int    sy  = s.n[0];
-        const int    sz  = s.n[0] * s.n[1];
-        const float *p   = s.values + (i + s.n[0] * (j + s.n[1] * k));
-        const float  v000 = load_ro(p);
-        const float  v100 = load_ro(p + sx);
-        const float  v010 = load_ro(p + sy);
-        const float  v110 = load_ro(p + sy + sx);
-        const float  v001 = load_ro(p + sz);
-        const float  v101 = load_ro(p + sz + sx);
-        const float  v011 = load_ro(p + sz + sy);
-        const float  v111 = load_ro(p + sz + sy + sx);
+        const int sy  = s.n[0];
+        const int sz  = s.n[0] * s.n[1];
+        const int idx = i + s.n[0] * (j + s.n[1] * k);
+        float     v000, v100, v010, v110, v001, v101, v011, v111;
+        if (s.quads != nullptr)
+          {
+            const Quad lo = load_ro(s.quads + idx);
+            const Quad hi = load_ro(s.quads + idx + sz);
+            v000          = lo.v00;
+            v100          = lo.v10;
+            v010          = lo.v01;
+            v110          = lo.v11;
+            v001          = hi.v00;
+            v101          = hi.v10;
+            v011          = hi.v01;
+            v111          = hi.v11;
+          }
+        else
+          {
+            const float *p = s.values + idx;
+            v000           = load_ro(p);
+            v100           = load_ro(p + 1);
+            v010           = load_ro(p + sy);
+            v110           = load_ro(p + sy + 1);
+            v001           = load_ro(p + sz);
+            v101           = load_ro(p + sz + 1);
+            v011           = load_ro(p + sz + sy);
+            v111           = load_ro(p + sz + sy + 1);
+          }
 
         const float c00 = lerp(v000, v100, fx);
         const float c10 = lerp(v010, v110, fx);
@@ -270,11 +331,46 @@ namespace particulate
             const float       dx = fsub(bx, e.x);
             const float       dy = fsub(by, e.y);
             const float       dz = fsub(bz, e.z);
-            const float d2 = fadd(fadd(fmul(dx, dx), fmul(dy, dy)), fmul(dz, dz));
+            const float       d2
+              = fadd(fadd(fmul(dx, dx), fmul(dy, dy)), fmul(dz, dz));
             if (d2 <= e.r2)
               return true;
           }
         return false;
+      }
+
+      /**
+       * Tests one body (number b) for a world point and updates the running
+       * result; returns true when nothing more can change it.
+       */
+      PARTICULATE_HD bool
+      visit_body(const BodyView &body,
+                 const int       b,
+                 const float     x,
+                 const float     y,
+                 const float     z,
+                 const bool      want_distance,
+                 int            &first,
+                 float          &dist)
+      {
+        float bx, by, bz;
+        to_body_frame(body, x, y, z, bx, by, bz);
+        if (body.shape.kind == shape_distance_map)
+          {
+            float d;
+            if (map_distance(body.shape, bx, by, bz, d))
+              {
+                if (d < dist)
+                  dist = d;
+                if (first < 0 && d <= 0.f)
+                  first = b;
+              }
+          }
+        else if (first < 0 && spheres_contain(body.shape, bx, by, bz))
+          first = b;
+        // Bodies come in increasing order, so the first hit is the lowest
+        // index; without distances nothing more is needed.
+        return !want_distance && first >= 0;
       }
 
       /**
@@ -294,11 +390,28 @@ namespace particulate
                      const float      y,
                      const float      z,
                      const bool       want_distance,
-                     int &            first,
-                     float &          dist)
+                     int             &first,
+                     float           &dist)
       {
         first = -1;
         dist  = HUGE_VALF;
+        if (sc.n_direct > 0)
+          {
+            // Constant indices (unrolled) keep sc.direct in parameter space.
+            PARTICULATE_UNROLL
+            for (int b = 0; b < max_direct_bodies; ++b)
+              if (b < sc.n_direct
+                  && visit_body(sc.direct[b],
+                                b,
+                                x,
+                                y,
+                                z,
+                                want_distance,
+                                first,
+                                dist))
+                return;
+            return;
+          }
         const int i = cell_index(x, sc.origin[0], sc.inv_h[0], sc.n[0]);
         const int j = cell_index(y, sc.origin[1], sc.inv_h[1], sc.n[1]);
         const int k = cell_index(z, sc.origin[2], sc.inv_h[2], sc.n[2]);
@@ -309,27 +422,12 @@ namespace particulate
         const int end   = load_ro(sc.cell_start + c + 1);
         for (int q = begin; q < end; ++q)
           {
-            const int        b     = load_ro(sc.body_ids + q);
-            const BodyView & body  = sc.bodies[b];
-            const ShapeView &shape = sc.shapes[body.shape];
-            float            bx, by, bz;
-            to_body_frame(body, x, y, z, bx, by, bz);
-            if (shape.kind == shape_distance_map)
-              {
-                float d;
-                if (map_distance(shape, bx, by, bz, d))
-                  {
-                    if (d < dist)
-                      dist = d;
-                    if (first < 0 && d <= 0.f)
-                      first = b;
-                  }
-              }
-            else if (first < 0 && spheres_contain(shape, bx, by, bz))
-              first = b;
-            // Bodies come in increasing order, so the first hit is the
-            // lowest index; without distances nothing more is needed.
-            if (!want_distance && first >= 0)
+            const int b = load_ro(sc.body_ids + q);
+            // Field by field (only what the shape kind needs): measured
+            // faster than copying the whole record with 16-byte loads,
+            // which costs registers and occupancy.
+            const BodyView &body = sc.bodies[b];
+            if (visit_body(body, b, x, y, z, want_distance, first, dist))
               return;
           }
       }
