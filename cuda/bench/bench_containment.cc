@@ -294,6 +294,42 @@ main(int argc, char **argv)
             std::fflush(stdout);
           }
 
+      // Fixed cost of a call, whatever the number of points: classify() of
+      // a single point (input checks and broad-phase grid on the host; for
+      // the GPU also the scene upload, one launch and the synchronisation).
+      std::printf(
+        "\nFixed cost per classify() call (one point, median of 50):\n");
+      for (const Scene &sc : scenes)
+        {
+          if (sc.name.find(only_scene) == std::string::npos)
+            continue;
+          const float  one[3] = {0.5f, 0.5f, 0.5f};
+          int          f;
+          float        d;
+          float       *dd     = sc.maps ? &d : nullptr;
+          const double cpu    = median_ms(50, [&] {
+            cpu1.classify(one, 1, sc.bodies.data(), sc.bodies.size(), &f, dd);
+          });
+          const double gpu_ms = gpu ?
+                                  median_ms(50,
+                                            [&] {
+                                              gpu->classify(one,
+                                                            1,
+                                                            sc.bodies.data(),
+                                                            sc.bodies.size(),
+                                                            &f,
+                                                            dd);
+                                            }) :
+                                  0.;
+          char         g[32]  = "-";
+          if (gpu)
+            std::snprintf(g, sizeof g, "%.3f ms", gpu_ms);
+          std::printf("  %-12s CPU path %.3f ms, GPU path %s\n",
+                      sc.name.c_str(),
+                      cpu,
+                      g);
+        }
+
       std::printf(
         "\n## CUDA containment benchmark (%s; CPU path: 1 thread and %u threads)\n\n",
         have_gpu ? gpu->device_name().c_str() : "no GPU",

@@ -59,6 +59,7 @@ namespace particulate {
       std::vector<std::unique_ptr<HostShape>> host_shapes;
       std::vector<detail::ShapeView>          views; // host or device pointers
       std::vector<detail::Box>                boxes; // body-frame boxes
+      detail::SceneGrid                       scene; // reused every call
 
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       std::unique_ptr<detail::CudaBackend> gpu;
@@ -311,8 +312,8 @@ namespace particulate {
       if (n == 0)
         return;
 
-      const detail::SceneGrid g
-        = detail::build_scene_grid(bodies, m, impl->views, impl->boxes);
+      detail::SceneGrid &g = impl->scene;
+      detail::build_scene_grid(bodies, m, impl->views, impl->boxes, g);
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       if (impl->gpu)
         {
@@ -368,8 +369,8 @@ namespace particulate {
       if (impl->gpu)
         {
           impl->check_bodies(bodies, m);
-          const detail::SceneGrid g
-            = detail::build_scene_grid(bodies, m, impl->views, impl->boxes);
+          detail::SceneGrid &g = impl->scene;
+          detail::build_scene_grid(bodies, m, impl->views, impl->boxes, g);
           return impl->gpu->time_kernel(g, xyz, n, with_distance, repetitions);
         }
 #else

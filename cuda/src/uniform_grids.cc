@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace particulate {
   namespace cuda {
@@ -229,19 +230,23 @@ namespace particulate {
         return g;
       }
 
-      SceneGrid
+      void
       build_scene_grid(const BodyInstance           *bodies,
                        const std::size_t             m,
                        const std::vector<ShapeView> &shape_views,
-                       const std::vector<Box>       &shape_boxes)
+                       const std::vector<Box>       &shape_boxes,
+                       SceneGrid                    &g)
       {
-        SceneGrid g;
         g.n_direct
           = m <= std::size_t(max_direct_bodies) ? static_cast<int>(m) : 0;
         g.bodies.resize(m);
-        std::vector<Box>    world(m);
-        std::vector<double> pads(m);
-        Box                 all;
+        // Scratch and results reuse the capacity of the previous call: no
+        // allocation (and no fresh page) per time step.
+        std::vector<Box>    &world = g.world;
+        std::vector<double> &pads  = g.pads;
+        world.resize(m);
+        pads.resize(m);
+        Box all;
         for (int a = 0; a < 3; ++a)
           {
             all.lo[a] = HUGE_VAL;
@@ -309,7 +314,8 @@ namespace particulate {
                 g.inv_h[a]  = 1.f;
               }
             g.cell_start.assign(2, 0);
-            return g;
+            g.body_ids.clear();
+            return;
           }
 
         // Cell edge about a quarter of the mean body size: a point then
@@ -325,79 +331,80 @@ namespace particulate {
           }
         const std::size_t n_cells
           = std::size_t(f.n[0]) * std::size_t(f.n[1]) * std::size_t(f.n[2]);
-        std::vector<int> count(n_cells + 1, 0);
-        for (int pass = 0; pass < 2; ++pass)
+        // One pass over the bodies collects (cell, body) pairs, a stable
+        // counting sort by cell then lists every cell's bodies in increasing
+        // order.
+        std::vector<std::pair<int, int>> &pairs = g.pairs;
+        pairs.clear();
+        const double half_diag = 0.5
+                                 * std::sqrt(f.h_query[0] * f.h_query[0]
+                                             + f.h_query[1] * f.h_query[1]
+                                             + f.h_query[2] * f.h_query[2]);
+        for (std::size_t b = 0; b < m; ++b)
           {
-            if (pass == 1)
+            int  i0[3], i1[3];
+            bool any = true;
+            for (int a = 0; a < 3; ++a)
+              any = any
+                    && cell_range(f,
+                                  a,
+                                  world[b].lo[a],
+                                  world[b].hi[a],
+                                  i0[a],
+                                  i1[a]);
+            if (!any)
+              continue;
+            // The world box of a rotated body is loose; keep only cells
+            // whose bounding sphere reaches the body's own (oriented) box,
+            // widened by the same padding as the world box. The body-frame
+            // cell centre is affine in (i, j, k): x_b = base + i e_x + j e_y
+            // + k e_z, with e_a = R^T h e_a.
+            const BodyInstance &in = bodies[b];
+            const Box   &sb = shape_boxes[static_cast<std::size_t>(in.shape)];
+            const double reach
+              = half_diag + pads[b] + f.eps_cells * f.h_query[0];
+            const double c0[3]
+              = {f.origin[0] + (i0[0] + 0.5) * f.h_query[0] - in.t[0],
+                 f.origin[1] + (i0[1] + 0.5) * f.h_query[1] - in.t[1],
+                 f.origin[2] + (i0[2] + 0.5) * f.h_query[2] - in.t[2]};
+            double base[3], e[3][3];
+            for (int a = 0; a < 3; ++a)
               {
-                g.cell_start.assign(n_cells + 1, 0);
-                for (std::size_t c = 0; c < n_cells; ++c)
-                  g.cell_start[c + 1] = g.cell_start[c] + count[c];
-                g.body_ids.resize(
-                  static_cast<std::size_t>(g.cell_start[n_cells]));
-                std::fill(count.begin(), count.end(), 0);
+                base[a] = double(in.R[a]) * c0[0] + double(in.R[3 + a]) * c0[1]
+                          + double(in.R[6 + a]) * c0[2];
+                for (int w = 0; w < 3; ++w)
+                  e[w][a] = double(in.R[3 * w + a]) * f.h_query[w];
               }
-            // Bodies in increasing order, so every cell lists them sorted.
-            for (std::size_t b = 0; b < m; ++b)
-              {
-                int  i0[3], i1[3];
-                bool any = true;
-                for (int a = 0; a < 3; ++a)
-                  any = any
-                        && cell_range(f,
-                                      a,
-                                      world[b].lo[a],
-                                      world[b].hi[a],
-                                      i0[a],
-                                      i1[a]);
-                if (!any)
-                  continue;
-                // The world box of a rotated body is loose; keep only cells
-                // whose bounding sphere reaches the body's own (oriented)
-                // box, widened by the same padding as the world box.
-                const BodyInstance &in = bodies[b];
-                const Box &sb = shape_boxes[static_cast<std::size_t>(in.shape)];
-                const double half_diag
-                  = 0.5
-                    * std::sqrt(f.h_query[0] * f.h_query[0]
-                                + f.h_query[1] * f.h_query[1]
-                                + f.h_query[2] * f.h_query[2]);
-                const double reach
-                  = half_diag + pads[b] + f.eps_cells * f.h_query[0];
-                for (int k = i0[2]; k <= i1[2]; ++k)
-                  for (int j = i0[1]; j <= i1[1]; ++j)
-                    for (int i = i0[0]; i <= i1[0]; ++i)
+            for (int k = i0[2]; k <= i1[2]; ++k)
+              for (int j = i0[1]; j <= i1[1]; ++j)
+                for (int i = i0[0]; i <= i1[0]; ++i)
+                  {
+                    const int di = i - i0[0], dj = j - i0[1], dk = k - i0[2];
+                    double    out2 = 0.;
+                    for (int a = 0; a < 3; ++a)
                       {
-                        const double c[3]
-                          = {f.origin[0] + (i + 0.5) * f.h_query[0],
-                             f.origin[1] + (j + 0.5) * f.h_query[1],
-                             f.origin[2] + (k + 0.5) * f.h_query[2]};
-                        const double d[3]
-                          = {c[0] - in.t[0], c[1] - in.t[1], c[2] - in.t[2]};
-                        double out2 = 0.;
-                        for (int a = 0; a < 3; ++a)
-                          {
-                            const double xb = double(in.R[a]) * d[0]
-                                              + double(in.R[3 + a]) * d[1]
-                                              + double(in.R[6 + a]) * d[2];
-                            const double e
-                              = std::max({sb.lo[a] - xb, 0., xb - sb.hi[a]});
-                            out2 += e * e;
-                          }
-                        if (out2 > reach * reach)
-                          continue;
-                        const std::size_t cell
-                          = i
-                            + std::size_t(f.n[0])
-                                * (j + std::size_t(f.n[1]) * k);
-                        if (pass == 1)
-                          g.body_ids[g.cell_start[cell] + count[cell]]
-                            = static_cast<int>(b);
-                        ++count[cell];
+                        const double xb = base[a] + di * e[0][a] + dj * e[1][a]
+                                          + dk * e[2][a];
+                        const double o = xb < sb.lo[a] ? sb.lo[a] - xb :
+                                         xb > sb.hi[a] ? xb - sb.hi[a] :
+                                                         0.;
+                        out2 += o * o;
                       }
-              }
+                    if (out2 <= reach * reach)
+                      pairs.emplace_back(i + f.n[0] * (j + f.n[1] * k),
+                                         static_cast<int>(b));
+                  }
           }
-        return g;
+        g.cell_start.assign(n_cells + 1, 0);
+        for (const auto &pr : pairs)
+          ++g.cell_start[static_cast<std::size_t>(pr.first) + 1];
+        for (std::size_t c = 0; c < n_cells; ++c)
+          g.cell_start[c + 1] += g.cell_start[c];
+        g.body_ids.resize(pairs.size());
+        std::vector<int> &fill = g.fill;
+        fill.assign(g.cell_start.begin(), g.cell_start.end() - 1);
+        for (const auto &pr : pairs)
+          g.body_ids[static_cast<std::size_t>(fill[pr.first]++)] = pr.second;
       }
 
       SceneView

@@ -10,6 +10,7 @@
 #include <particulate/cuda/detail/point_query.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace particulate {
@@ -51,6 +52,11 @@ namespace particulate {
         std::vector<int>      cell_start;
         std::vector<int>      body_ids;
         std::vector<BodyView> bodies;
+        // Scratch space kept between calls.
+        std::vector<Box>                 world;
+        std::vector<double>              pads;
+        std::vector<std::pair<int, int>> pairs;
+        std::vector<int>                 fill;
       };
 
       /**
@@ -61,12 +67,14 @@ namespace particulate {
        * @param shape_views  view of each shape (host or device pointers),
        *                     copied into the body records.
        * @param shape_boxes  body-frame box of each shape, indexed by handle.
+       * @param grid         the result; its vectors' capacity is reused.
        */
-      SceneGrid
+      void
       build_scene_grid(const BodyInstance           *bodies,
                        std::size_t                   m,
                        const std::vector<ShapeView> &shape_views,
-                       const std::vector<Box>       &shape_boxes);
+                       const std::vector<Box>       &shape_boxes,
+                       SceneGrid                    &grid);
 
       /**
        * The SceneView of a grid whose arrays live at the given addresses
