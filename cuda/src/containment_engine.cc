@@ -71,23 +71,23 @@ namespace particulate {
         for (std::size_t b = 0; b < m; ++b)
           {
             const BodyInstance &in = bodies[b];
-            std::ostringstream  where;
-            where << "classify(), body " << b;
+            // Built only on error: this check runs for every body, every call.
+            const auto where
+              = [b] { return "classify(), body " + std::to_string(b); };
             if (in.shape < 0
                 || static_cast<std::size_t>(in.shape) >= views.size())
-              bad_input(where.str(),
+              bad_input(where(),
                         "shape handle " + std::to_string(in.shape)
                           + " was not returned by add_distance_map() or "
                             "add_inner_spheres() of this engine ("
                           + std::to_string(views.size()) + " shapes uploaded)");
             for (int i = 0; i < 9; ++i)
               if (!finite(in.R[i]))
-                bad_input(where.str(),
+                bad_input(where(),
                           "the rotation matrix holds a NaN or infinity");
             for (int i = 0; i < 3; ++i)
               if (!finite(in.t[i]))
-                bad_input(where.str(),
-                          "the translation holds a NaN or infinity");
+                bad_input(where(), "the translation holds a NaN or infinity");
             // R R^T = I up to float noise: catches scaled or garbage matrices.
             for (int i = 0; i < 3; ++i)
               for (int j = 0; j < 3; ++j)
@@ -97,7 +97,7 @@ namespace particulate {
                     dot += double(in.R[3 * i + k]) * double(in.R[3 * j + k]);
                   if (std::abs(dot - (i == j ? 1. : 0.)) > 1e-4)
                     bad_input(
-                      where.str(),
+                      where(),
                       "the rotation matrix is not orthonormal (R R^T differs "
                       "from the identity by more than 1e-4); pass a proper "
                       "rotation, row-major, body to world");

@@ -354,9 +354,9 @@ namespace particulate {
                                   i1[a]);
             if (!any)
               continue;
-            // The world box of a rotated body is loose; keep only cells
-            // whose bounding sphere reaches the body's own (oriented) box,
-            // widened by the same padding as the world box. The body-frame
+            // The world box of a rotated body is loose; test cells against
+            // the body's own (oriented) box, widened by a cell's half
+            // diagonal plus the padding of the world box. The body-frame
             // cell centre is affine in (i, j, k): x_b = base + i e_x + j e_y
             // + k e_z, with e_a = R^T h e_a.
             const BodyInstance &in = bodies[b];
@@ -375,25 +375,58 @@ namespace particulate {
                 for (int w = 0; w < 3; ++w)
                   e[w][a] = double(in.R[3 * w + a]) * f.h_query[w];
               }
+            // A cell is kept when its centre lies in the body's box widened
+            // by `reach` on every side (a superset of the cells whose
+            // bounding sphere meets the box). Along a row of cells the
+            // centre moves linearly, so each row's kept cells form one
+            // interval, found per axis in O(1) instead of cell by cell.
+            // (std::ceil/std::floor are library calls on baseline x86-64;
+            // on values clamped to [-1, n_i + 1] a truncation does.)
+            const int    n_i        = i1[0] - i0[0];
+            const double t_lo_clamp = -1., t_hi_clamp = n_i + 1.;
+            double       inv_u[3];
+            bool         moves[3];
+            for (int a = 0; a < 3; ++a)
+              {
+                moves[a] = std::abs(e[0][a]) >= 1e-12 * f.h_query[0];
+                inv_u[a] = moves[a] ? 1. / e[0][a] : 0.;
+              }
             for (int k = i0[2]; k <= i1[2]; ++k)
               for (int j = i0[1]; j <= i1[1]; ++j)
-                for (int i = i0[0]; i <= i1[0]; ++i)
-                  {
-                    const int di = i - i0[0], dj = j - i0[1], dk = k - i0[2];
-                    double    out2 = 0.;
-                    for (int a = 0; a < 3; ++a)
-                      {
-                        const double xb = base[a] + di * e[0][a] + dj * e[1][a]
-                                          + dk * e[2][a];
-                        const double o = xb < sb.lo[a] ? sb.lo[a] - xb :
-                                         xb > sb.hi[a] ? xb - sb.hi[a] :
-                                                         0.;
-                        out2 += o * o;
-                      }
-                    if (out2 <= reach * reach)
-                      pairs.emplace_back(i + f.n[0] * (j + f.n[1] * k),
-                                         static_cast<int>(b));
-                  }
+                {
+                  const int dj = j - i0[1], dk = k - i0[2];
+                  int       t_min = 0, t_max = n_i;
+                  for (int a = 0; a < 3 && t_min <= t_max; ++a)
+                    {
+                      const double x0 = base[a] + dj * e[1][a] + dk * e[2][a];
+                      const double lo = sb.lo[a] - reach, hi = sb.hi[a] + reach;
+                      if (!moves[a])
+                        {
+                          if (x0 < lo || x0 > hi)
+                            t_max = -1;
+                          continue;
+                        }
+                      double ta = (lo - x0) * inv_u[a],
+                             tb = (hi - x0) * inv_u[a];
+                      if (ta > tb)
+                        std::swap(ta, tb);
+                      ta
+                        = std::min(std::max(ta - 1e-9, t_lo_clamp), t_hi_clamp);
+                      tb
+                        = std::min(std::max(tb + 1e-9, t_lo_clamp), t_hi_clamp);
+                      int ca = static_cast<int>(ta); // ceil(ta)
+                      if (ca < ta)
+                        ++ca;
+                      int fb = static_cast<int>(tb); // floor(tb)
+                      if (fb > tb)
+                        --fb;
+                      t_min = std::max(t_min, ca);
+                      t_max = std::min(t_max, fb);
+                    }
+                  for (int t = t_min; t <= t_max; ++t)
+                    pairs.emplace_back(i0[0] + t + f.n[0] * (j + f.n[1] * k),
+                                       static_cast<int>(b));
+                }
           }
         g.cell_start.assign(n_cells + 1, 0);
         for (const auto &pr : pairs)
