@@ -273,11 +273,12 @@ namespace {
     PARTICULATE_CHECK(inside > np / 50,
                       "only %zu points inside a body",
                       inside);
-    std::printf(
-      "  %zu points, %zu inside a body, %zu within a map box: identical\n",
-      np,
-      inside,
-      finite_d);
+    std::printf("  %zu points, %zu inside a body, %zu within a map box: %s\n",
+                np,
+                inside,
+                finite_d,
+                bad_f + bad_fo + bad_d == 0 ? "identical to brute force" :
+                                              "DIFFERENT");
   }
 
   /** Inner spheres: grid vs brute force; carved spheres lie inside the body. */
@@ -338,12 +339,12 @@ namespace {
                           "sphere set %d: only %zu inside",
                           s,
                           inside);
-        std::printf(
-          "  set %d: %zu spheres, %zu of %zu points inside, identical to brute force\n",
-          s,
-          shapes[s].spheres.r.size(),
-          inside,
-          np);
+        std::printf("  set %d: %zu spheres, %zu of %zu points inside, %s\n",
+                    s,
+                    shapes[s].spheres.r.size(),
+                    inside,
+                    np,
+                    bad == 0 ? "identical to brute force" : "DIFFERENT");
       }
   }
 
