@@ -1,0 +1,401 @@
+// Benchmark of point containment (thesis §6.8, Table 6.8 sizes): unit-cube
+// lattices of 33^3 ... 129^3 points against 1 and 100 bodies, distance maps
+// and inner spheres. For the GPU: kernel time (CUDA events, points resident
+// on the device), end-to-end time of classify() with pinned host buffers
+// (host broad-phase build, copies in, kernel, copies out), points per second
+// and the fraction of the memory-bandwidth bound, from the device-to-device
+// copy bandwidth measured in the same run. For the CPU path on the same host:
+// one thread and all hardware threads. Prints a table; never asserts on time.
+//
+// Usage: bench_containment [--quick] [--size N]... [--scene TEXT]
+// [--kernel-only]
+//   --quick: 33^3 and 49^3 only; --size: lattice sizes to run (repeatable);
+//   --scene: only scenes whose name contains TEXT ("map x1", "spheres", ...);
+//   --kernel-only: only the kernel timings (for ncu), no CPU, no table.
+#include <particulate/cuda/containment_engine.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "../tests/test_scenes.h"
+
+using namespace particulate::cuda;
+using namespace particulate::cuda::testing;
+
+namespace {
+  using Clock = std::chrono::steady_clock;
+
+  /** Median wall time [ms] of f() over reps runs after one warm-up. */
+  template <typename F>
+  double
+  median_ms(const int reps, F f)
+  {
+    f();
+    std::vector<double> t;
+    for (int r = 0; r < reps; ++r)
+      {
+        const auto a = Clock::now();
+        f();
+        t.push_back(
+          std::chrono::duration<double, std::milli>(Clock::now() - a).count());
+      }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+  }
+
+  struct Scene
+  {
+    std::string               name;
+    std::vector<int>          handles_cpu, handles_gpu;
+    std::vector<BodyInstance> bodies;
+    bool                      maps;
+  };
+
+  /** Poses: one body at the cube centre, or 100 on a jittered 5x5x4 lattice. */
+  std::vector<BodyInstance>
+  poses(std::mt19937 &rng, const int m, const int n_shapes)
+  {
+    std::vector<BodyInstance>              b(m);
+    std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+    for (int i = 0; i < m; ++i)
+      {
+        b[i].shape = i % n_shapes;
+        random_rotation(rng, b[i].R);
+        if (m == 1)
+          b[i].t[0] = b[i].t[1] = b[i].t[2] = 0.5f;
+        else
+          {
+            const int ix = i % 5, iy = (i / 5) % 5, iz = i / 25;
+            b[i].t[0] = float(0.1 + 0.2 * ix + jitter(rng));
+            b[i].t[1] = float(0.1 + 0.2 * iy + jitter(rng));
+            b[i].t[2] = float(0.125 + 0.25 * iz + jitter(rng));
+          }
+      }
+    return b;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  bool             quick = false;
+  std::vector<int> only_sizes;
+  std::string      only_scene;
+  bool             kernel_only = false; // for profilers: only time_kernel()
+  for (int a = 1; a < argc; ++a)
+    {
+      const std::string arg = argv[a];
+      if (arg == "--quick")
+        quick = true;
+      else if (arg == "--size" && a + 1 < argc)
+        only_sizes.push_back(std::atoi(argv[++a]));
+      else if (arg == "--kernel-only")
+        kernel_only = true;
+      else if (arg == "--scene" && a + 1 < argc)
+        only_scene = argv[++a];
+      else
+        {
+          std::printf(
+            "usage: bench_containment [--quick] [--size N]... [--scene TEXT] [--kernel-only]\n");
+          return 2;
+        }
+    }
+  try
+    {
+      const bool        have_gpu = ContainmentEngine::cuda_device_available();
+      ContainmentEngine cpu1(Backend::cpu, 1), cpu_all(Backend::cpu, 0);
+      std::unique_ptr<ContainmentEngine> gpu;
+      if (have_gpu)
+        gpu.reset(new ContainmentEngine(Backend::cuda));
+      const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+      std::printf(
+        "particulate containment benchmark\n  GPU: %s\n  CPU: %u hardware threads\n",
+        have_gpu ? gpu->device_name().c_str() : "none (CPU columns only)",
+        hw);
+
+      double bw = 0.; // GB/s, read + write
+      if (have_gpu)
+        {
+          bw = gpu->measure_copy_bandwidth(std::size_t(512) << 20);
+          std::printf(
+            "  device copy bandwidth (cudaMemcpy D2D 512 MiB, read+write): %.0f GB/s\n",
+            bw);
+        }
+
+      // Shapes. One body: a torus of ring radius 0.3 and tube radius 0.12
+      // in the unit cube; 100 bodies: sphere, torus and box of half-size 0.07.
+      std::vector<DistanceMapData> maps1
+        = {sample_map(torus_sdf(0.3, 0.12), 0.45, 96)};
+      const double                 s = 0.07;
+      std::vector<DistanceMapData> maps100
+        = {sample_map(sphere_sdf(0.7 * s), s, 40),
+           sample_map(torus_sdf(0.6 * s, 0.25 * s), s, 40),
+           sample_map(box_sdf(0.8 * s, 0.5 * s, 0.3 * s), s, 40)};
+      // Inner spheres carved from the same shapes: bounding spheres of a
+      // lattice of cells, diameter about the 129^3 mesh spacing (thesis §6.8).
+      std::vector<InnerSphereData> sph1
+        = {carve_spheres(torus_sdf(0.3, 0.12), 0.45, 1. / 128)};
+      std::vector<InnerSphereData> sph100
+        = {carve_spheres(sphere_sdf(0.7 * s), s, s / 10),
+           carve_spheres(torus_sdf(0.6 * s, 0.25 * s), s, s / 10),
+           carve_spheres(box_sdf(0.8 * s, 0.5 * s, 0.3 * s), s, s / 10)};
+      std::printf(
+        "  shapes: 1 body = torus map 96^3 / %zu inner spheres; 100 bodies = 3 maps 40^3 / "
+        "%zu+%zu+%zu inner spheres\n",
+        sph1[0].r.size(),
+        sph100[0].r.size(),
+        sph100[1].r.size(),
+        sph100[2].r.size());
+
+      std::mt19937       rng(42);
+      std::vector<Scene> scenes;
+      for (int kind = 0; kind < 2; ++kind)
+        for (const int m : {1, 100})
+          {
+            Scene sc;
+            sc.maps = kind == 0;
+            sc.name = std::string(sc.maps ? "map" : "spheres")
+                      + (m == 1 ? " x1" : " x100");
+            const auto      &mv = m == 1 ? maps1 : maps100;
+            const auto      &sv = m == 1 ? sph1 : sph100;
+            const int        ns = static_cast<int>(m == 1 ? 1 : 3);
+            std::vector<int> hc, hall, hg;
+            for (int i = 0; i < ns; ++i)
+              {
+                hc.push_back(sc.maps ? cpu1.add_distance_map(mv[i]) :
+                                       cpu1.add_inner_spheres(sv[i]));
+                hall.push_back(sc.maps ? cpu_all.add_distance_map(mv[i]) :
+                                         cpu_all.add_inner_spheres(sv[i]));
+                if (gpu)
+                  hg.push_back(sc.maps ? gpu->add_distance_map(mv[i]) :
+                                         gpu->add_inner_spheres(sv[i]));
+              }
+            sc.bodies = poses(rng, m, ns);
+            // Handles agree across engines because shapes are added in the
+            // same order; map the body shapes to the handles.
+            for (BodyInstance &b : sc.bodies)
+              b.shape = hc[b.shape];
+            scenes.push_back(sc);
+          }
+
+      std::vector<int> sizes = {33, 49, 65, 97, 129};
+      if (quick)
+        sizes = {33, 49};
+      if (!only_sizes.empty())
+        sizes = only_sizes;
+
+      struct Row
+      {
+        std::string scene;
+        int         n1;
+        std::size_t n, inside;
+        double kernel_ms, e2e_ms, e2e_pageable_ms, cpu1_ms, cpuall_ms, bound_ms;
+        bool   identical;
+      };
+      std::vector<Row> rows;
+      for (const Scene &sc : scenes)
+        for (const int n1 : sizes)
+          {
+            if (sc.name.find(only_scene) == std::string::npos)
+              continue;
+            std::vector<float> xyz = unit_cube_lattice(n1);
+            const std::size_t  n   = xyz.size() / 3;
+            std::vector<int>   f_cpu(n), f_gpu(n);
+            std::vector<float> d_cpu(n), d_gpu(n);
+            float             *dc = sc.maps ? d_cpu.data() : nullptr;
+            float             *dg = sc.maps ? d_gpu.data() : nullptr;
+            Row                r{};
+            r.scene = sc.name;
+            r.n1    = n1;
+            r.n     = n;
+            if (kernel_only && gpu)
+              {
+                r.kernel_ms = gpu->time_kernel(xyz.data(),
+                                               n,
+                                               sc.bodies.data(),
+                                               sc.bodies.size(),
+                                               sc.maps,
+                                               3);
+                std::printf("%s %d^3: kernel %.4f ms\n",
+                            sc.name.c_str(),
+                            n1,
+                            r.kernel_ms);
+                continue;
+              }
+            const int cpu_reps = n1 >= 97 ? 3 : 5;
+            r.cpu1_ms          = median_ms(cpu_reps, [&] {
+              cpu1.classify(xyz.data(),
+                            n,
+                            sc.bodies.data(),
+                            sc.bodies.size(),
+                            f_cpu.data(),
+                            dc);
+            });
+            r.cpuall_ms        = median_ms(cpu_reps, [&] {
+              cpu_all.classify(xyz.data(),
+                               n,
+                               sc.bodies.data(),
+                               sc.bodies.size(),
+                               f_cpu.data(),
+                               dc);
+            });
+            r.inside = std::count_if(f_cpu.begin(), f_cpu.end(), [](int f) {
+              return f >= 0;
+            });
+            if (gpu)
+              {
+                gpu->pin_host_memory(xyz.data(), xyz.size() * sizeof(float));
+                gpu->pin_host_memory(f_gpu.data(), n * sizeof(int));
+                gpu->pin_host_memory(d_gpu.data(), n * sizeof(float));
+                r.e2e_ms    = median_ms(20, [&] {
+                  gpu->classify(xyz.data(),
+                                n,
+                                sc.bodies.data(),
+                                sc.bodies.size(),
+                                f_gpu.data(),
+                                dg);
+                });
+                r.kernel_ms = gpu->time_kernel(xyz.data(),
+                                               n,
+                                               sc.bodies.data(),
+                                               sc.bodies.size(),
+                                               sc.maps,
+                                               20);
+                gpu->unpin_host_memory(xyz.data());
+                gpu->unpin_host_memory(f_gpu.data());
+                gpu->unpin_host_memory(d_gpu.data());
+                // The same from ordinary (pageable) memory, as a caller with
+                // its own std::vector would see it.
+                r.e2e_pageable_ms = median_ms(5, [&] {
+                  gpu->classify(xyz.data(),
+                                n,
+                                sc.bodies.data(),
+                                sc.bodies.size(),
+                                f_gpu.data(),
+                                dg);
+                });
+                r.identical       = f_gpu == f_cpu
+                              && (!sc.maps
+                                  || std::memcmp(d_gpu.data(),
+                                                 d_cpu.data(),
+                                                 n * sizeof(float))
+                                       == 0);
+                // Compulsory traffic: read 12 B of point, write 4 B of flag
+                // (+ 4 B of distance); bytes / (copy bandwidth).
+                const double bytes
+                  = double(n) * (12. + 4. + (sc.maps ? 4. : 0.));
+                r.bound_ms = bytes / (bw * 1e9) * 1e3;
+              }
+            rows.push_back(r);
+            std::fflush(stdout);
+          }
+
+      // Fixed cost of a call, whatever the number of points: classify() of
+      // a single point (input checks and broad-phase grid on the host; for
+      // the GPU also the scene upload, one launch and the synchronisation).
+      std::printf(
+        "\nFixed cost per classify() call (one point, median of 50):\n");
+      for (const Scene &sc : scenes)
+        {
+          if (sc.name.find(only_scene) == std::string::npos)
+            continue;
+          const float  one[3] = {0.5f, 0.5f, 0.5f};
+          int          f;
+          float        d;
+          float       *dd     = sc.maps ? &d : nullptr;
+          const double cpu    = median_ms(50, [&] {
+            cpu1.classify(one, 1, sc.bodies.data(), sc.bodies.size(), &f, dd);
+          });
+          const double gpu_ms = gpu ?
+                                  median_ms(50,
+                                            [&] {
+                                              gpu->classify(one,
+                                                            1,
+                                                            sc.bodies.data(),
+                                                            sc.bodies.size(),
+                                                            &f,
+                                                            dd);
+                                            }) :
+                                  0.;
+          char         g[32]  = "-";
+          if (gpu)
+            std::snprintf(g, sizeof g, "%.3f ms", gpu_ms);
+          std::printf("  %-12s CPU path %.3f ms, GPU path %s\n",
+                      sc.name.c_str(),
+                      cpu,
+                      g);
+        }
+
+      std::printf(
+        "\n## CUDA containment benchmark (%s; CPU path: 1 thread and %u threads)\n\n",
+        have_gpu ? gpu->device_name().c_str() : "no GPU",
+        hw);
+      std::printf(
+        "| scene        | points        | inside | kernel ms | kernel Gpts/s | %% of BW bound "
+        "| e2e ms (pinned) | e2e Mpts/s | e2e ms (pageable) | CPU 1 thr ms | CPU %u thr ms "
+        "| e2e speed-up vs 1 thr | vs %u thr | GPU==CPU |\n",
+        hw,
+        hw);
+      std::printf(
+        "|--------------|---------------|--------|-----------|---------------|---------------"
+        "|-----------------|------------|-------------------|--------------|--------------"
+        "|-----------------------|-----------|----------|\n");
+      for (const Row &r : rows)
+        {
+          char pts[32];
+          std::snprintf(pts, sizeof pts, "%d^3=%zu", r.n1, r.n);
+          if (have_gpu)
+            std::printf(
+              "| %-12s | %-13s | %6zu | %9.4f | %13.1f | %12.0f%% | %15.3f | %10.0f | %17.3f "
+              "| %12.2f | %12.2f | %20.1fx | %8.1fx | %-8s |\n",
+              r.scene.c_str(),
+              pts,
+              r.inside,
+              r.kernel_ms,
+              r.n / r.kernel_ms / 1e6,
+              100. * r.bound_ms / r.kernel_ms,
+              r.e2e_ms,
+              r.n / r.e2e_ms / 1e3,
+              r.e2e_pageable_ms,
+              r.cpu1_ms,
+              r.cpuall_ms,
+              r.cpu1_ms / r.e2e_ms,
+              r.cpuall_ms / r.e2e_ms,
+              r.identical ? "yes" : "NO");
+          else
+            std::printf(
+              "| %-12s | %-13s | %6zu | %9s | %13s | %13s | %15s | %10s | %17s | %12.2f | %12.2f "
+              "| %21s | %9s | %-8s |\n",
+              r.scene.c_str(),
+              pts,
+              r.inside,
+              "-",
+              "-",
+              "-",
+              "-",
+              "-",
+              "-",
+              r.cpu1_ms,
+              r.cpuall_ms,
+              "-",
+              "-",
+              "-");
+        }
+      std::printf(
+        "\n%% of BW bound = time to move the compulsory bytes (12 B point read + 4 B flag + 4 B "
+        "distance for maps, per point) at the measured copy bandwidth / kernel time. Kernel: points "
+        "resident on the device, best of 20 launches. e2e = classify() from host to host (broad-phase "
+        "build, copies in, kernel, copies out), median of 20 (pinned) or 5 (pageable). CPU: same "
+        "classify() on the CPU path, median of 3-5. Speed-ups use the pinned e2e time.\n");
+    }
+  catch (const std::exception &e)
+    {
+      std::printf("benchmark failed: %s\n", e.what());
+      return 1;
+    }
+  return 0;
+}
