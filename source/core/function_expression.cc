@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -59,7 +60,8 @@ namespace particulate {
           + " separated by ';' (one per velocity component in "
           + std::to_string(dim) + "D).");
 
-      std::map<std::string, double> constant_map;
+      // pi is always available, as users of muparser expressions expect
+      std::map<std::string, double> constant_map{{"pi", M_PI}, {"Pi", M_PI}};
       for (const auto &item : dealii::Utilities::split_string_list(constants))
         {
           const auto pair = dealii::Utilities::split_string_list(item, '=');

@@ -199,7 +199,7 @@ namespace particulate {
                         Patterns::Double(0.),
                         "Stop when the l2 norm of the residual is below this.");
       prm.declare_entry("Relative tolerance",
-                        "1e-8",
+                        "1e-6",
                         Patterns::Double(0.),
                         "Stop when the residual has fallen by this factor.");
       prm.declare_entry("Maximum iterations",
@@ -264,10 +264,13 @@ namespace particulate {
                         "flow), false the non-symmetric variant (strong "
                         "convection).");
       prm.declare_entry("AMG smoother",
-                        "Chebyshev",
+                        "ILU",
                         Patterns::Selection(
                           "Chebyshev|symmetric Gauss-Seidel|Gauss-Seidel|ILU"),
-                        "Smoother on every level of the velocity AMG.");
+                        "Smoother on every level of the velocity AMG. ILU is "
+                        "robust for the non-symmetric Newton Jacobian; "
+                        "Chebyshev and Gauss-Seidel can stagnate when "
+                        "convection matters.");
       prm.declare_entry("AMG smoother sweeps",
                         "2",
                         Patterns::Integer(1),

@@ -72,7 +72,7 @@ namespace particulate {
     {
       std::string  method             = "Newton"; ///< "Newton" or "fixed point"
       double       absolute_tolerance = 1e-10;
-      double       relative_tolerance = 1e-8;
+      double       relative_tolerance = 1e-6;
       unsigned int maximum_iterations = 20;
 
       static void

@@ -1,0 +1,90 @@
+#ifndef particulate_tests_fluid_test_utilities_h
+#define particulate_tests_fluid_test_utilities_h
+
+// Small helpers shared by the fluid tests: build a case from .prm text and
+// report checks in a uniform way.
+
+#include <particulate/core/input_file.h>
+#include <particulate/fluid/flow_simulation.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace particulate {
+  namespace testing {
+    /** Parse @p text (the contents of a .prm) into case parameters. */
+    inline fluid::FlowCaseParameters
+    parameters_from_text(const std::string &text, const std::string &name)
+    {
+      const std::string file = name + ".prm";
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::ofstream(file) << text;
+      MPI_Barrier(MPI_COMM_WORLD);
+      dealii::ParameterHandler prm;
+      fluid::FlowCaseParameters::declare(prm);
+      core::parse_input_file(prm, file);
+      fluid::FlowCaseParameters parameters;
+      parameters.parse(prm);
+      return parameters;
+    }
+
+    /** Path of a file in the source tree (tests run in the build tree). */
+    inline std::string
+    source_path(const std::string &relative)
+    {
+      const char *root = std::getenv("PARTICULATE_SOURCE_DIR");
+      return std::string(root ? root : ".") + "/" + relative;
+    }
+
+    /** Print one check and remember whether it failed. */
+    class Checker
+    {
+    public:
+      void
+      check(const bool ok, const std::string &what)
+      {
+        if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          std::cout << (ok ? "  ok    " : "  FAIL  ") << what << std::endl;
+        failed |= !ok;
+      }
+      /** |value - reference| <= tolerance * |reference| */
+      void
+      check_relative(const double       value,
+                     const double       reference,
+                     const double       tolerance,
+                     const std::string &what)
+      {
+        const double error = std::abs(value - reference) / std::abs(reference);
+        char         numbers[160];
+        std::snprintf(numbers,
+                      sizeof(numbers),
+                      " = %.12g, reference %.12g, relative error %.2e "
+                      "(allowed %.1e)",
+                      value,
+                      reference,
+                      error,
+                      tolerance);
+        check(error <= tolerance, what + numbers);
+      }
+      int
+      exit_code() const
+      {
+        return failed ? 1 : 0;
+      }
+
+    private:
+      bool failed = false;
+    };
+  } // namespace testing
+} // namespace particulate
+
+#endif
