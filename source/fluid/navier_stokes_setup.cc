@@ -124,6 +124,8 @@ namespace particulate {
 
       solution.reinit(owned_partitioning, relevant_partitioning, communicator);
       old_solution.reinit(solution);
+      previous_solution.reinit(solution);
+      has_previous_solution = false;
       mesh_velocity.reinit(solution);
       newton_update.reinit(owned_partitioning, communicator);
       system_rhs.reinit(owned_partitioning, communicator);

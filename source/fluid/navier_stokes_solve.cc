@@ -139,28 +139,47 @@ namespace particulate {
 
 
     template <int dim>
+    void
+    NavierStokes<dim>::build_velocity_preconditioner()
+    {
+      TimerOutput::Scope             scope(timer, "fluid: velocity AMG setup");
+      std::vector<std::vector<bool>> constant_modes;
+      const FEValuesExtractors::Vector velocities(0);
+      DoFTools::extract_constant_modes(dof_handler,
+                                       fe.component_mask(velocities),
+                                       constant_modes);
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.constant_modes = constant_modes;
+      data.elliptic       = parameters.linear_solver.amg_elliptic;
+      data.smoother_type  = parameters.linear_solver.amg_smoother.c_str();
+      data.higher_order_elements = true;
+      data.smoother_sweeps       = parameters.linear_solver.amg_smoother_sweeps;
+      data.aggregation_threshold = 0.02;
+      velocity_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      velocity_amg->initialize(system_matrix.block(0, 0), data);
+      amg_reference_iterations = 0;
+    }
+
+
+
+    /*
+     * The velocity AMG hierarchy is kept across Newton iterations, stages and
+     * time steps (its setup costs as much as a Krylov solve). A kept
+     * hierarchy gets a limited number of iterations; if it needs more, or if
+     * the count grows markedly over the one right after its construction, it
+     * is rebuilt from the current matrix.
+     */
+    template <int dim>
     unsigned int
     NavierStokes<dim>::solve_linear(const Stage &stage, const double tolerance)
     {
       if (!schur_approximation_is_current)
         build_schur_complement_approximation();
+      bool fresh = false;
       if (!velocity_amg)
         {
-          TimerOutput::Scope scope(timer, "fluid: velocity AMG setup");
-          std::vector<std::vector<bool>>   constant_modes;
-          const FEValuesExtractors::Vector velocities(0);
-          DoFTools::extract_constant_modes(dof_handler,
-                                           fe.component_mask(velocities),
-                                           constant_modes);
-          TrilinosWrappers::PreconditionAMG::AdditionalData data;
-          data.constant_modes = constant_modes;
-          data.elliptic       = parameters.linear_solver.amg_elliptic;
-          data.smoother_type  = parameters.linear_solver.amg_smoother.c_str();
-          data.higher_order_elements = true;
-          data.smoother_sweeps = parameters.linear_solver.amg_smoother_sweeps;
-          data.aggregation_threshold = 0.02;
-          velocity_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-          velocity_amg->initialize(system_matrix.block(0, 0), data);
+          build_velocity_preconditioner();
+          fresh = true;
         }
 
       TimerOutput::Scope          scope(timer, "fluid: linear solve");
@@ -170,46 +189,65 @@ namespace particulate {
         pressure_laplacian,
         *laplace_amg,
         parameters.linear_solver.pressure_poisson_tolerance);
-      const BlockTriangularPreconditioner preconditioner(
-        system_matrix,
-        *velocity_amg,
-        *mass_ilu,
-        laplace_inverse,
-        inverse_lumped_mass,
-        steady
-          || parameters.linear_solver.schur_approximation
-               == "least-squares commutator",
-        stage.theta_implicit * mu,
-        steady ? 0. : parameters.properties.density / stage.time_step);
+      const unsigned int max_iterations
+        = parameters.linear_solver.maximum_iterations;
 
-      SolverControl control(parameters.linear_solver.maximum_iterations,
-                            tolerance,
-                            /*log_history=*/false,
-                            /*log_result=*/false);
-      SolverFGMRES<BlockVector> solver(
-        control,
-        SolverFGMRES<BlockVector>::AdditionalData(
-          parameters.linear_solver.krylov_size));
-      newton_update = 0;
-      try
+      while (true)
         {
-          solver.solve(system_matrix,
-                       newton_update,
-                       system_rhs,
-                       preconditioner);
+          const BlockTriangularPreconditioner preconditioner(
+            system_matrix,
+            *velocity_amg,
+            *mass_ilu,
+            laplace_inverse,
+            inverse_lumped_mass,
+            steady
+              || parameters.linear_solver.schur_approximation
+                   == "least-squares commutator",
+            stage.theta_implicit * mu,
+            steady ? 0. : parameters.properties.density / stage.time_step);
+          const unsigned int allowed
+            = fresh ?
+                max_iterations :
+                std::min(max_iterations, 2 * amg_reference_iterations + 20);
+          SolverControl             control(allowed, tolerance, false, false);
+          SolverFGMRES<BlockVector> solver(
+            control,
+            SolverFGMRES<BlockVector>::AdditionalData(
+              parameters.linear_solver.krylov_size));
+          newton_update = 0;
+          try
+            {
+              solver.solve(system_matrix,
+                           newton_update,
+                           system_rhs,
+                           preconditioner);
+            }
+          catch (const SolverControl::NoConvergence &e)
+            {
+              if (!fresh)
+                {
+                  // the kept hierarchy no longer fits the matrix
+                  build_velocity_preconditioner();
+                  fresh = true;
+                  continue;
+                }
+              std::ostringstream message;
+              message << "The linear solver (FGMRES) did not converge in "
+                      << e.last_step << " iterations (residual "
+                      << e.last_residual << ", target " << tolerance
+                      << "). Reduce 'Time step' in subsection 'Time', or "
+                         "raise 'Maximum iterations' in subsection 'Linear "
+                         "solver'.";
+              throw std::runtime_error(message.str());
+            }
+          zero_constraints.distribute(newton_update);
+          const unsigned int iterations = control.last_step();
+          if (fresh)
+            amg_reference_iterations = iterations;
+          else if (iterations > 1.5 * amg_reference_iterations + 5)
+            velocity_amg.reset();
+          return iterations;
         }
-      catch (const SolverControl::NoConvergence &e)
-        {
-          std::ostringstream message;
-          message << "The linear solver (FGMRES) did not converge in "
-                  << e.last_step << " iterations (residual " << e.last_residual
-                  << ", target " << tolerance
-                  << "). Reduce 'Time step' in subsection 'Time', or raise "
-                     "'Maximum iterations' in subsection 'Linear solver'.";
-          throw std::runtime_error(message.str());
-        }
-      zero_constraints.distribute(newton_update);
-      return control.last_step();
     }
 
 
@@ -226,9 +264,6 @@ namespace particulate {
       iterate = solution;
       nonzero_constraints.distribute(iterate);
       solution = iterate;
-
-      // the preconditioners depend on the time step and the iterate
-      velocity_amg.reset();
 
       SolveStatistics stats;
       bool            newton = nl.method == "Newton";
@@ -261,7 +296,6 @@ namespace particulate {
               throw std::runtime_error(message.str());
             }
           assemble(stage, true, newton);
-          velocity_amg.reset(); // the Jacobian depends on the iterate
           const unsigned int linear_iterations
             = solve_linear(stage,
                            std::max(parameters.linear_solver.relative_tolerance
@@ -346,6 +380,25 @@ namespace particulate {
       for (const Stage &stage : stages)
         {
           old_solution = solution;
+          if (stage.time_step > 0. && has_previous_solution
+              && stage.time_old > previous_time)
+            {
+              // linear extrapolation in time as the first Newton iterate
+              BlockVector guess(owned_partitioning, communicator);
+              guess = solution;
+              BlockVector difference(owned_partitioning, communicator);
+              difference = solution;
+              BlockVector previous(owned_partitioning, communicator);
+              previous = previous_solution;
+              difference -= previous;
+              guess.add((stage.time_new - stage.time_old)
+                          / (stage.time_old - previous_time),
+                        difference);
+              solution = guess;
+            }
+          previous_solution     = old_solution;
+          previous_time         = stage.time_old;
+          has_previous_solution = stage.time_step > 0.;
           total += solve_stage(stage);
         }
       return total;

@@ -197,6 +197,8 @@ namespace particulate {
                const bool   newton);
       void
       build_schur_complement_approximation();
+      void
+      build_velocity_preconditioner();
       unsigned int
       solve_linear(const Stage &stage, const double tolerance);
       void
@@ -238,6 +240,12 @@ namespace particulate {
       BlockVector old_solution;  // ghosted
       BlockVector mesh_velocity; // ghosted
       bool        has_mesh_velocity = false;
+      /// solution at the start of the previous stage, for extrapolation
+      BlockVector previous_solution;
+      double      previous_time         = 0.;
+      bool        has_previous_solution = false;
+      /// FGMRES iterations right after the last velocity AMG rebuild
+      unsigned int amg_reference_iterations = 0;
 
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> velocity_amg;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
