@@ -1,0 +1,99 @@
+#include <particulate/rigid/dem_solver.h>
+
+#include <cmath>
+
+namespace particulate::rigid {
+  double
+  DemSolver::damping_ratio(const double e)
+  {
+    if (e <= 0.)
+      return 1.;
+    if (e >= 1.)
+      return 0.;
+    const double l = std::log(e);
+    return -l / std::sqrt(M_PI * M_PI + l * l);
+  }
+
+
+
+  void
+  DemSolver::solve(SolverContext &ctx)
+  {
+    auto        &bodies = *ctx.bodies;
+    const double h      = ctx.h;
+    f_.assign(bodies.size(), Eigen::Vector3d::Zero());
+    t_.assign(bodies.size(), Eigen::Vector3d::Zero());
+
+    // Algorithm 7: loop over the edges of the contact graph.
+    for (ContactEdge &e : ctx.graph->edges())
+      {
+        if (e.manifold.points.empty())
+          continue;
+        const RigidBody &A = bodies[e.manifold.a], &B = bodies[e.manifold.b];
+        const ContactMaterial &mat   = ctx.material(e);
+        const double           inv_m = A.inverse_mass() + B.inverse_mass();
+        const double           m_eff = 1. / inv_m;
+        const double           zeta  = damping_ratio(mat.restitution);
+        const double kn = mat.stiffness, kt = mat.tangential_stiffness;
+        const double eta_n = 2. * zeta * std::sqrt(m_eff * kn);
+        const double eta_t = 2. * zeta * std::sqrt(m_eff * kt);
+        for (ContactPoint &c : e.manifold.points)
+          {
+            c.impulse.setZero();
+            if (c.distance >= 0.)
+              {
+                c.dem_spring.setZero();
+                continue;
+              }
+            const Eigen::Vector3d &n  = c.normal;
+            const Eigen::Vector3d  ra = c.position - A.position;
+            const Eigen::Vector3d  rb = c.position - B.position;
+            const Eigen::Vector3d  vrel
+              = B.linear_velocity + B.angular_velocity.cross(rb)
+                - A.linear_velocity - A.angular_velocity.cross(ra);
+            const double          vn = vrel.dot(n);
+            const Eigen::Vector3d vt = vrel - vn * n;
+            // No clamp to f_n >= 0: the linear spring-dashpot then gives
+            // exactly the restitution e whose damping ratio was chosen (a clamp
+            // would raise the effective e by several percent); the brief
+            // tensile phase ends with the overlap.
+            const double fn = kn * (-c.distance) - eta_n * vn;
+
+            // Tangential spring on the tangential displacement history.
+            Eigen::Vector3d xi = c.dem_spring - c.dem_spring.dot(n) * n;
+            xi += h * vt;
+            Eigen::Vector3d ft  = -kt * xi - eta_t * vt;
+            const double    ftn = ft.norm();
+            if (ftn > mat.static_friction * std::max(fn, 0.))
+              {
+                ft = ftn > 0. ? Eigen::Vector3d(
+                       ft * (mat.dynamic_friction * std::max(fn, 0.) / ftn)) :
+                                Eigen::Vector3d::Zero();
+                xi = kt > 0. ? Eigen::Vector3d(-(ft + eta_t * vt) / kt) :
+                               Eigen::Vector3d::Zero();
+              }
+            c.dem_spring = xi;
+
+            const Eigen::Vector3d F = fn * n + ft; // on b
+            f_[e.manifold.b] += F;
+            t_[e.manifold.b] += rb.cross(F);
+            f_[e.manifold.a] -= F;
+            t_[e.manifold.a] -= ra.cross(F);
+            c.impulse = h * F;
+          }
+      }
+
+    for (unsigned int i = 0; i < bodies.size(); ++i)
+      {
+        RigidBody &b = bodies[i];
+        if (b.is_fixed())
+          continue;
+        b.linear_velocity
+          += h * (b.inverse_mass() * ((*ctx.forces)[i] + f_[i]) + ctx.gravity);
+        const Eigen::Vector3d T = (*ctx.torques)[i] + t_[i];
+        if (T.squaredNorm() > 0.)
+          b.angular_velocity += h * (b.inverse_inertia_world() * T);
+      }
+    last_iterations_ = 1;
+  }
+} // namespace particulate::rigid
