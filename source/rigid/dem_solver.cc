@@ -30,13 +30,13 @@ namespace particulate::rigid {
         if (e.manifold.points.empty())
           continue;
         const RigidBody &A = bodies[e.manifold.a], &B = bodies[e.manifold.b];
-        const ContactMaterial &mat   = ctx.material(e);
-        const double           inv_m = A.inverse_mass() + B.inverse_mass();
-        const double           m_eff = 1. / inv_m;
-        const double           zeta  = damping_ratio(mat.restitution);
-        const double kn = mat.stiffness, kt = mat.tangential_stiffness;
-        const double eta_n = 2. * zeta * std::sqrt(m_eff * kn);
-        const double eta_t = 2. * zeta * std::sqrt(m_eff * kt);
+        const ContactMaterial &mat  = ctx.material(e);
+        const double           zeta = damping_ratio(mat.restitution);
+        const double          kn = mat.stiffness, kt = mat.tangential_stiffness;
+        const Eigen::Matrix3d Ia
+          = A.is_fixed() ? Eigen::Matrix3d::Zero() : A.inverse_inertia_world();
+        const Eigen::Matrix3d Ib
+          = B.is_fixed() ? Eigen::Matrix3d::Zero() : B.inverse_inertia_world();
         for (ContactPoint &c : e.manifold.points)
           {
             c.impulse.setZero();
@@ -51,8 +51,18 @@ namespace particulate::rigid {
             const Eigen::Vector3d  vrel
               = B.linear_velocity + B.angular_velocity.cross(rb)
                 - A.linear_velocity - A.angular_velocity.cross(ra);
-            const double          vn = vrel.dot(n);
-            const Eigen::Vector3d vt = vrel - vn * n;
+            const double vn = vrel.dot(n);
+            // Effective mass of the pair along the normal at this point,
+            // rotation included (for off-centre contacts it is much smaller
+            // than the reduced mass, and the dashpot must see it to stay
+            // stable and to give the intended restitution).
+            const Eigen::Vector3d ran = ra.cross(n), rbn = rb.cross(n);
+            const double          m_eff = 1.
+                                 / (A.inverse_mass() + B.inverse_mass()
+                                    + ran.dot(Ia * ran) + rbn.dot(Ib * rbn));
+            const double          eta_n = 2. * zeta * std::sqrt(m_eff * kn);
+            const double          eta_t = 2. * zeta * std::sqrt(m_eff * kt);
+            const Eigen::Vector3d vt    = vrel - vn * n;
             // No clamp to f_n >= 0: the linear spring-dashpot then gives
             // exactly the restitution e whose damping ratio was chosen (a clamp
             // would raise the effective e by several percent); the brief
@@ -62,15 +72,28 @@ namespace particulate::rigid {
             // Tangential spring on the tangential displacement history.
             Eigen::Vector3d xi = c.dem_spring - c.dem_spring.dot(n) * n;
             xi += h * vt;
-            Eigen::Vector3d ft  = -kt * xi - eta_t * vt;
-            const double    ftn = ft.norm();
-            if (ftn > mat.static_friction * std::max(fn, 0.))
+            // Coulomb test on the elastic part (the dashpot only damps the
+            // sticking oscillation): beyond mu_s f_n the contact slips, the
+            // spring is cut back to the sliding force mu_d f_n and the
+            // tangential force is exactly the dynamic Coulomb force.
+            const double    fn_pos = std::max(fn, 0.);
+            Eigen::Vector3d ft     = -kt * xi;
+            if (ft.norm() > mat.static_friction * fn_pos)
               {
-                ft = ftn > 0. ? Eigen::Vector3d(
-                       ft * (mat.dynamic_friction * std::max(fn, 0.) / ftn)) :
-                                Eigen::Vector3d::Zero();
-                xi = kt > 0. ? Eigen::Vector3d(-(ft + eta_t * vt) / kt) :
-                               Eigen::Vector3d::Zero();
+                const double len = ft.norm();
+                ft               = len > 0. ? Eigen::Vector3d(
+                       ft * (mat.dynamic_friction * fn_pos / len)) :
+                                              Eigen::Vector3d::Zero();
+                xi               = kt > 0. ? Eigen::Vector3d(-ft / kt) :
+                                             Eigen::Vector3d::Zero();
+              }
+            else
+              {
+                ft -= eta_t * vt;
+                const double len = ft.norm(),
+                             lim = mat.static_friction * fn_pos;
+                if (len > lim)
+                  ft *= lim / len;
               }
             c.dem_spring = xi;
 

@@ -118,6 +118,11 @@ namespace particulate::rigid {
       min_radius_ = min_radius_ > 0. ? std::min(min_radius_, r) : r;
     margin_ = parameters_.contact_margin > 0. ? parameters_.contact_margin :
                                                 0.02 * min_radius_;
+    // Automatic slop: 0.2 % of the smallest body. Resting contacts whose
+    // tiny overlap stays below it get no Baumgarte push, which would
+    // otherwise feed energy into stacks when the iterations stop early.
+    if (parameters_.solver.penetration_slop == 0.)
+      solver_->parameters.penetration_slop = 0.002 * min_radius_;
     return bodies_.size() - 1;
   }
 
@@ -164,17 +169,23 @@ namespace particulate::rigid {
         // Shortest binary contact time over all material pairs, with the
         // lightest dynamic body as the reduced mass (conservative).
         double m_min = std::numeric_limits<double>::infinity();
+        // Smallest effective mass at a contact: half the mass (two equal
+        // bodies), or the rotational I_min / R^2 for off-centre contacts.
         for (const RigidBody &b : bodies_)
           if (!b.is_fixed())
-            m_min = std::min(m_min, b.mass());
+            {
+              const double R = b.bounding_radius();
+              m_min          = std::min({m_min,
+                                         0.5 * b.mass(),
+                                         b.principal_inertia().minCoeff() / (R * R)});
+            }
         if (std::isfinite(m_min))
           {
             double kmax = 0.;
             for (const auto &p : pair_materials_)
               kmax
                 = std::max(kmax, std::max(p.stiffness, p.tangential_stiffness));
-            // Half the mass: two equal light bodies colliding.
-            const double tc = M_PI * std::sqrt(0.5 * m_min / kmax);
+            const double tc = M_PI * std::sqrt(m_min / kmax);
             n               = std::max<unsigned int>(
               n,
               std::ceil(dt * parameters_.dem_steps_per_contact / tc - 1.e-9));

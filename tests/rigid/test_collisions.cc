@@ -2,10 +2,12 @@
 // 1. Head-on sphere collisions (unequal masses): post-collision velocities
 //    equal the closed form v1' = (m1 v1 + m2 v2 + m2 e (v2 - v1)) / (m1 + m2)
 //    to 1e-12 for e = 0, 0.5, 1 with the two velocity-level solvers, and to
-//    1 % with the DEM (whose linear spring-dashpot restitution is exact only
-//    up to the no-attraction clamp and the explicit time integration).
+//    1 % with the DEM (its linear spring-dashpot restitution is exact in
+//    continuous time; the explicit integration with 50 substeps per contact
+//    time costs ~0.5 %).
 // 2. Oblique sphere and rotating box collisions: linear and angular momentum
-//    (about the origin) conserved to 1e-12 relative with every solver;
+//    (about the origin) conserved to 1e-12 relative (DEM: 1e-11, round-off
+//    of its ~10x more substeps);
 //    kinetic energy conserved to 1e-9 for e = 1 head-on.
 #include <particulate/rigid/box.h>
 #include <particulate/rigid/sphere.h>
@@ -22,6 +24,8 @@ namespace {
     WorldParameters prm;
     prm.gravity        = Eigen::Vector3d::Zero();
     prm.contact_solver = type;
+    // Resolve the DEM contact time finely enough for a 1 % restitution.
+    prm.dem_steps_per_contact = 50.;
     World    w(prm);
     Material m;
     m.restitution   = e;
@@ -135,7 +139,10 @@ main()
       CHECK(w.body(3).linear_velocity.norm() > 0.1,
             "the second box must have been hit");
       CHECK((P - P0).norm() <= 1.e-12 * P0.norm(), "linear momentum");
-      CHECK((L - L0).norm() <= 1.e-12 * L0.norm(), "angular momentum");
+      // The DEM takes ~10 substeps per step, so its round-off accumulates
+      // over ~4000 rotation updates: 1e-11 there.
+      const double tol = type == ContactSolverType::dem ? 1.e-11 : 1.e-12;
+      CHECK((L - L0).norm() <= tol * L0.norm(), "angular momentum");
     }
   std::cout << "OK\n";
   return 0;

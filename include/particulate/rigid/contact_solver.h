@@ -64,7 +64,8 @@ namespace particulate::rigid {
     /** Fraction of the penetration beyond the slop removed per step by the
      * velocity solvers (Baumgarte stabilisation). */
     double baumgarte = 0.2;
-    /** Penetration in m tolerated without correction. */
+    /** Penetration in m tolerated without correction; 0 lets the World
+     * choose 0.2 % of the smallest bounding radius. */
     double penetration_slop = 0.;
     /** Tangential speed in m/s below which a contact counts as sticking
      * (static friction applies) at the start of the step. */

@@ -12,11 +12,12 @@ namespace particulate::rigid {
    * collision has the material's restitution e (no clamp to F_n >= 0, which
    * would raise the effective e; the short tensile phase ends with the overlap)
    * (zeta = -ln e / sqrt(pi^2 + ln^2 e)); tangentially a spring on the
-   * accumulated tangential displacement with a viscous part, limited by the
-   * Coulomb cone (Cundall–Strack; static coefficient for the stick test,
-   * dynamic for the sliding force). Forces and torques are accumulated pairwise
-   * and the velocities kicked explicitly, so the substep must resolve the
-   * contact time t_c = pi sqrt(m_eff / k_n): World picks the substeps.
+   * accumulated tangential displacement (Cundall–Strack): while its elastic
+   * force stays below mu_s f_n the contact sticks (spring plus dashpot, capped
+   * at mu_s f_n), beyond it the contact slides with exactly mu_d f_n and the
+   * spring is cut back to that force. Forces and torques are accumulated
+   * pairwise and the velocities kicked explicitly, so the substep must resolve
+   * the contact time t_c = pi sqrt(m_eff / k_n): World picks the substeps.
    */
   class DemSolver : public ContactSolver
   {
