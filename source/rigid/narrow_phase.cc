@@ -231,7 +231,39 @@ namespace particulate::rigid {
       edge.gjk_direction      = r.normal;
       if (r.distance > margin)
         return;
-      out.push_back(make_point(A, r.point_a, r.point_b, r.normal, r.distance));
+      Points pts;
+      pts.push_back(make_point(A, r.point_a, r.point_b, r.normal, r.distance));
+      // GJK/EPA give one point; a flat face resting on another needs the
+      // reduced contact set of its rim (Fig. 3.20). Tilt A by a small angle
+      // about four axes perpendicular to the normal, query again and map
+      // the witness on A back to the untilted body (Bullet's perturbation
+      // approach); gaps are measured along the original normal.
+      const Eigen::Vector3d n   = r.normal;
+      const Eigen::Vector3d t1  = n.unitOrthogonal();
+      const double          ang = 0.05;
+      for (int k = 0; k < 4; ++k)
+        {
+          const Eigen::Vector3d axis = Eigen::AngleAxisd(k * M_PI / 2., n) * t1;
+          const Eigen::Matrix3d Q
+            = Eigen::AngleAxisd(ang, axis).toRotationMatrix();
+          ConvexPlacement tilted  = pa;
+          tilted.rotation         = Q * pa.rotation;
+          const ConvexDistance  s = gjk_epa(tilted, pb, n);
+          const Eigen::Vector3d on_a
+            = A.position + Q.transpose() * (s.point_a - A.position);
+          const double gap = (s.point_b - on_a).dot(n);
+          if (gap > margin)
+            continue;
+          const Eigen::Vector3d on_b = on_a + gap * n;
+          bool                  dup  = false;
+          for (const auto &c : pts)
+            dup |= (c.position - 0.5 * (on_a + on_b)).norm()
+                   < 1.e-3 * std::min(A.bounding_radius(), B.bounding_radius());
+          if (!dup)
+            pts.push_back(make_point(A, on_a, on_b, n, gap));
+        }
+      detail::reduce_points(pts, 4);
+      out.insert(out.end(), pts.begin(), pts.end());
     }
 
     /** Surface samples of @p P tested against the signed distance of @p Q.
