@@ -363,9 +363,11 @@ namespace particulate::rigid {
           }
         else
           {
+            // Surface points of each body against the other's distance
+            // function (a half-space has no surface points of its own).
+            sample_against(A, A, B, false, margin, out);
             if (tb != T::half_space)
-              sample_against(A, A, B, false, margin, out);
-            sample_against(A, B, A, true, margin, out);
+              sample_against(A, B, A, true, margin, out);
             detail::reduce_points(out, 8);
           }
       }
