@@ -56,6 +56,21 @@ namespace particulate::rigid {
     edge.state        = old_points.empty() ? EdgeState::new_contact :
                                              EdgeState::persistent_contact;
     const double tol2 = tolerance * tolerance;
+    if (pts.size() == 1 && old_points.size() == 1)
+      {
+        // One point before and after (spheres): the same contact, however
+        // far the body-frame anchor has rolled.
+        ContactPoint       &p = pts[0];
+        const ContactPoint &q = old_points[0];
+        if (q.normal.dot(p.normal) > 0.9)
+          {
+            p.normal_impulse = q.normal_impulse;
+            p.tangent_impulse
+              = q.tangent_impulse - p.normal.dot(q.tangent_impulse) * p.normal;
+            p.dem_spring = q.dem_spring - p.normal.dot(q.dem_spring) * p.normal;
+          }
+        return;
+      }
     for (ContactPoint &p : pts)
       {
         double best = tol2;

@@ -23,6 +23,11 @@ namespace particulate::rigid {
     const double h      = ctx.h;
     f_.assign(bodies.size(), Eigen::Vector3d::Zero());
     t_.assign(bodies.size(), Eigen::Vector3d::Zero());
+    // World-frame inverse inertia once per body and substep.
+    inv_I_.resize(bodies.size());
+    for (unsigned int i = 0; i < bodies.size(); ++i)
+      inv_I_[i] = bodies[i].is_fixed() ? Eigen::Matrix3d::Zero() :
+                                         bodies[i].inverse_inertia_world();
 
     // Algorithm 7: loop over the edges of the contact graph.
     for (ContactEdge &e : ctx.graph->edges())
@@ -32,11 +37,9 @@ namespace particulate::rigid {
         const RigidBody &A = bodies[e.manifold.a], &B = bodies[e.manifold.b];
         const ContactMaterial &mat  = ctx.material(e);
         const double           zeta = damping_ratio(mat.restitution);
-        const double          kn = mat.stiffness, kt = mat.tangential_stiffness;
-        const Eigen::Matrix3d Ia
-          = A.is_fixed() ? Eigen::Matrix3d::Zero() : A.inverse_inertia_world();
-        const Eigen::Matrix3d Ib
-          = B.is_fixed() ? Eigen::Matrix3d::Zero() : B.inverse_inertia_world();
+        const double kn = mat.stiffness, kt = mat.tangential_stiffness;
+        const Eigen::Matrix3d &Ia = inv_I_[e.manifold.a];
+        const Eigen::Matrix3d &Ib = inv_I_[e.manifold.b];
         for (ContactPoint &c : e.manifold.points)
           {
             c.impulse.setZero();
@@ -115,7 +118,7 @@ namespace particulate::rigid {
           += h * (b.inverse_mass() * ((*ctx.forces)[i] + f_[i]) + ctx.gravity);
         const Eigen::Vector3d T = (*ctx.torques)[i] + t_[i];
         if (T.squaredNorm() > 0.)
-          b.angular_velocity += h * (b.inverse_inertia_world() * T);
+          b.angular_velocity += h * (inv_I_[i] * T);
       }
     last_iterations_ = 1;
   }

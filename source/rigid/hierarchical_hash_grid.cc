@@ -8,13 +8,9 @@
 namespace particulate::rigid {
   namespace {
     inline std::size_t
-    hash_cell(const std::int64_t x, const std::int64_t y, const std::int64_t z)
+    hash_key(std::uint64_t h)
     {
-      // Mix the three coordinates with large odd multipliers, then fold
-      // the high bits down (splitmix64 finaliser).
-      std::uint64_t h = std::uint64_t(x) * 0x9E3779B97F4A7C15ull
-                        ^ std::uint64_t(y) * 0xC2B2AE3D27D4EB4Full
-                        ^ std::uint64_t(z) * 0x165667B19E3779F9ull;
+      // splitmix64 finaliser: spreads neighbouring keys over the table.
       h ^= h >> 31;
       h *= 0xBF58476D1CE4E5B9ull;
       h ^= h >> 29;
@@ -86,19 +82,32 @@ namespace particulate::rigid {
 
 
 
+  std::uint64_t
+  HierarchicalHashGrid::pack(const std::int64_t x,
+                             const std::int64_t y,
+                             const std::int64_t z)
+  {
+    constexpr std::uint64_t m = (1ull << 21) - 1;
+    return (std::uint64_t(x) & m) | ((std::uint64_t(y) & m) << 21)
+           | ((std::uint64_t(z) & m) << 42);
+  }
+
+
+
   int
   HierarchicalHashGrid::find_slot(const Level       &lvl,
                                   const std::int64_t x,
                                   const std::int64_t y,
                                   const std::int64_t z) const
   {
-    const std::size_t mask = lvl.table.size() - 1;
-    for (std::size_t s = hash_cell(x, y, z) & mask;; s = (s + 1) & mask)
+    const std::uint64_t key  = pack(x, y, z);
+    const std::size_t   mask = lvl.table.size() - 1;
+    for (std::size_t s = hash_key(key) & mask;; s = (s + 1) & mask)
       {
         const Cell &c = lvl.table[s];
-        if (!c.used)
+        if (!c.used())
           return -1;
-        if (c.x == x && c.y == y && c.z == z)
+        if (c.key == key)
           return int(s);
       }
   }
@@ -111,22 +120,20 @@ namespace particulate::rigid {
                                     const std::int64_t y,
                                     const std::int64_t z)
   {
-    std::size_t mask = lvl.table.size() - 1;
-    for (std::size_t s = hash_cell(x, y, z) & mask;; s = (s + 1) & mask)
+    const std::uint64_t key  = pack(x, y, z);
+    const std::size_t   mask = lvl.table.size() - 1;
+    for (std::size_t s = hash_key(key) & mask;; s = (s + 1) & mask)
       {
         Cell &c = lvl.table[s];
-        if (!c.used)
+        if (!c.used())
           {
-            c.used  = true;
-            c.x     = x;
-            c.y     = y;
-            c.z     = z;
+            c.key   = key;
             c.head  = -1;
             c.count = 0;
             ++lvl.n_used_slots;
             return int(s);
           }
-        if (c.x == x && c.y == y && c.z == z)
+        if (c.key == key)
           return int(s);
       }
   }
@@ -139,23 +146,25 @@ namespace particulate::rigid {
     Level            &lvl = levels_[level];
     std::vector<Cell> old;
     old.swap(lvl.table);
-    // Keep the load factor at most 1/2 for the occupied cells; empty cells
+    // Keep the load factor at most 1/4 for the occupied cells; empty cells
     // are dropped here, which is how the table forgets vacated cells.
     std::size_t n_occupied = 0;
     for (const Cell &c : old)
-      n_occupied += (c.used && c.count > 0);
+      n_occupied += (c.used() && c.count > 0);
     while (capacity < 4 * n_occupied + 64)
       capacity *= 2;
     lvl.table.assign(capacity, Cell());
     lvl.n_used_slots = 0;
     for (const Cell &c : old)
-      if (c.used && c.count > 0)
+      if (c.used() && c.count > 0)
         {
-          const int s        = insert_slot(lvl, c.x, c.y, c.z);
-          lvl.table[s].head  = c.head;
-          lvl.table[s].count = c.count;
-          for (int o = c.head; o >= 0; o = objects_[o].next)
-            objects_[o].slot = s;
+          const int     first = c.head;
+          const Object &o     = objects_[first];
+          const int     s     = insert_slot(lvl, o.x, o.y, o.z);
+          lvl.table[s].head   = c.head;
+          lvl.table[s].count  = c.count;
+          for (int q = c.head; q >= 0; q = objects_[q].next)
+            objects_[q].slot = s;
         }
   }
 
@@ -292,27 +301,51 @@ namespace particulate::rigid {
         const Object &o = objects_[id];
         if (o.level < 0)
           continue;
-        const Level &lvl = levels_[o.level];
+        const Level           &lvl = levels_[o.level];
+        const Eigen::Vector3d &c   = proxies_[id].center;
+        const double           r   = proxies_[id].radius;
         // Own cell: only the objects behind this one in the list.
         for (int q = o.next; q >= 0; q = objects_[q].next)
           report(id, q);
-        // Half of the neighbours on the own level.
+        // Half of the neighbours on the own level, skipping those out of
+        // reach: a partner on this level has a radius below h/2, so a
+        // neighbour cell across a face further than r + h/2 away cannot
+        // hold one.
+        const double       reach = r + 0.5 * lvl.h;
+        bool               lo_ok[3], hi_ok[3];
+        const std::int64_t cell[3] = {o.x, o.y, o.z};
+        for (int k = 0; k < 3; ++k)
+          {
+            lo_ok[k] = c[k] - cell[k] * lvl.h <= reach;
+            hi_ok[k] = (cell[k] + 1) * lvl.h - c[k] <= reach;
+          }
         for (const auto &d : half_offsets)
-          visit_cell(lvl, o.x + d[0], o.y + d[1], o.z + d[2], id);
-        // All coarser levels that hold objects (Algorithm 2, inner loop).
-        const Eigen::Vector3d &c = proxies_[id].center;
+          {
+            bool ok = true;
+            for (int k = 0; k < 3; ++k)
+              ok = ok && (d[k] == 0 || (d[k] > 0 ? hi_ok[k] : lo_ok[k]));
+            if (ok)
+              visit_cell(lvl, o.x + d[0], o.y + d[1], o.z + d[2], id);
+          }
+        // All coarser levels that hold objects (Algorithm 2, inner loop):
+        // only the cells within r + h_l/2 of the centre, i.e. 2 x 2 x 2 of
+        // the 27 around it for small objects.
         for (unsigned int l = o.level + 1; l < nl; ++l)
           {
             const Level &up = levels_[l];
             if (up.n_objects == 0)
               continue;
-            const std::int64_t x = cell_coordinate(c[0], up.h),
-                               y = cell_coordinate(c[1], up.h),
-                               z = cell_coordinate(c[2], up.h);
-            for (int dx = -1; dx <= 1; ++dx)
-              for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz)
-                  visit_cell(up, x + dx, y + dy, z + dz, id);
+            const double       reach_l = r + 0.5 * up.h;
+            const std::int64_t x0      = cell_coordinate(c[0] - reach_l, up.h),
+                               x1      = cell_coordinate(c[0] + reach_l, up.h),
+                               y0      = cell_coordinate(c[1] - reach_l, up.h),
+                               y1      = cell_coordinate(c[1] + reach_l, up.h),
+                               z0      = cell_coordinate(c[2] - reach_l, up.h),
+                               z1      = cell_coordinate(c[2] + reach_l, up.h);
+            for (std::int64_t x = x0; x <= x1; ++x)
+              for (std::int64_t y = y0; y <= y1; ++y)
+                for (std::int64_t z = z0; z <= z1; ++z)
+                  visit_cell(up, x, y, z, id);
           }
       }
     // Unbounded bodies against everything else.
@@ -338,7 +371,7 @@ namespace particulate::rigid {
         for (unsigned int s = 0; s < levels_[l].table.size(); ++s)
           {
             const Cell &c = levels_[l].table[s];
-            if (!c.used)
+            if (!c.used())
               continue;
             unsigned int cnt  = 0;
             int          prev = -1;
@@ -347,13 +380,13 @@ namespace particulate::rigid {
                 const Object &ob = objects_[o];
                 if (ob.level != int(l) || ob.slot != int(s) || ob.prev != prev)
                   fail("object " + std::to_string(o) + " has stale links");
-                if (ob.x != c.x || ob.y != c.y || ob.z != c.z)
+                if (pack(ob.x, ob.y, ob.z) != c.key)
                   fail("object " + std::to_string(o) + " in the wrong cell");
                 const double h = levels_[l].h;
                 const auto  &p = proxies_[o].center;
-                if (cell_coordinate(p[0], h) != c.x
-                    || cell_coordinate(p[1], h) != c.y
-                    || cell_coordinate(p[2], h) != c.z)
+                if (cell_coordinate(p[0], h) != ob.x
+                    || cell_coordinate(p[1], h) != ob.y
+                    || cell_coordinate(p[2], h) != ob.z)
                   fail("object " + std::to_string(o)
                        + " centre outside its cell");
                 if (!(h > 2. * proxies_[o].radius))

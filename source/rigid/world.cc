@@ -42,6 +42,8 @@ namespace particulate::rigid {
       fail("'DEM steps per contact' must be >= 1 (20 or more is advisable).");
     if (!(grid_level_ratio > 1.))
       fail("the hash-grid level ratio must exceed 1.");
+    if (!(broad_phase_skin >= 0.))
+      fail("the broad-phase skin must be >= 0 m (0 selects it automatically).");
     if (solver.iterations < 1)
       fail("the contact solver needs at least one iteration.");
     if (!(solver.baumgarte >= 0. && solver.baumgarte <= 1.))
@@ -121,6 +123,9 @@ namespace particulate::rigid {
     // Automatic slop: 0.2 % of the smallest body. Resting contacts whose
     // tiny overlap stays below it get no Baumgarte push, which would
     // otherwise feed energy into stacks when the iterations stop early.
+    skin_ = parameters_.broad_phase_skin > 0. ? parameters_.broad_phase_skin :
+                                                0.2 * min_radius_;
+    broad_positions_.clear(); // forces a new broad phase
     if (parameters_.solver.penetration_slop == 0.)
       solver_->parameters.penetration_slop = 0.002 * min_radius_;
     return bodies_.size() - 1;
@@ -196,10 +201,33 @@ namespace particulate::rigid {
 
 
 
+  bool
+  World::skin_exceeded() const
+  {
+    if (broad_positions_.size() != bodies_.size())
+      return true;
+    const double limit = 0.25 * skin_ * skin_; // (skin / 2)^2
+    for (unsigned int i = 0; i < bodies_.size(); ++i)
+      if ((bodies_[i].position - broad_positions_[i]).squaredNorm() > limit)
+        return true;
+    return false;
+  }
+
+
+
   void
   World::broad_phase(const double horizon)
   {
-    const double g = parameters_.gravity.norm();
+    // DEM (horizon 0): Verlet skin instead of a velocity bound; remember
+    // where the bodies were.
+    if (horizon == 0.)
+      {
+        broad_positions_.resize(bodies_.size());
+        for (unsigned int i = 0; i < bodies_.size(); ++i)
+          broad_positions_[i] = bodies_[i].position;
+      }
+    const double skin_half = horizon == 0. ? 0.5 * skin_ : 0.;
+    const double g         = parameters_.gravity.norm();
     proxies_.resize(bodies_.size());
     for (unsigned int i = 0; i < bodies_.size(); ++i)
       {
@@ -218,7 +246,7 @@ namespace particulate::rigid {
             p.plane_normal = b.orientation * hs.normal;
             p.plane_offset = hs.offset + p.plane_normal.dot(b.position)
                              + 0.5 * margin_
-                             + horizon * b.linear_velocity.norm();
+                             + horizon * b.linear_velocity.norm() + skin_half;
             continue;
           }
         // Inflate by half the margin plus how far the body may travel
@@ -229,7 +257,7 @@ namespace particulate::rigid {
                            horizon
                              * (2. * b.linear_velocity.norm()
                                 + b.angular_velocity.norm() * r + g * horizon);
-        p.radius = r + 0.5 * margin_ + travel;
+        p.radius = r + 0.5 * margin_ + skin_half + travel;
       }
     grid_.update(proxies_);
     grid_.find_pairs(pairs_);
@@ -316,13 +344,16 @@ namespace particulate::rigid {
     for (unsigned int s = 0; s < n_sub; ++s)
       {
         auto t0 = Clock::now();
-        if (s == 0 || !dem)
-          broad_phase(dem ? dt : h);
+        if (!dem)
+          broad_phase(h);
+        else if (skin_exceeded())
+          broad_phase(0.);
         stats_.time_broad += seconds_since(t0);
 
         t0 = Clock::now();
         narrow_phase(h);
-        stats_.groups = graph_.compute_contact_groups(bodies_);
+        if (!dem) // the DEM works pairwise and needs no groups
+          stats_.groups = graph_.compute_contact_groups(bodies_);
         stats_.time_narrow += seconds_since(t0);
 
         t0 = Clock::now();
@@ -345,12 +376,36 @@ namespace particulate::rigid {
         stats_.time_integrate += seconds_since(t0);
       }
 
-    // Contact forces per body, averaged over the step.
+    // Contact forces are assembled on demand (contact_forces()).
+    forces_valid_ = false;
+    last_dt_      = dt;
+
+    stats_.pairs = graph_.edges().size();
+    for (const ContactEdge &e : graph_.edges())
+      stats_.contacts += e.manifold.points.size();
+    for (RigidBody &b : bodies_)
+      b.clear_accumulators();
+    time_ += dt;
+    ++step_number_;
+  }
+
+
+
+  void
+  World::assemble_contact_forces() const
+  {
+    if (forces_valid_)
+      return;
+    forces_valid_ = true;
     contact_forces_.clear();
+    force_offsets_.assign(bodies_.size() + 1, 0);
+    if (!(last_dt_ > 0.))
+      return;
+    // Per pair: the step's impulse / dt at the impulse-weighted centre.
     auto add = [&](const ContactEdge &e) {
       if (!(e.step_weight > 0.))
         return;
-      const Eigen::Vector3d F = e.step_impulse / dt;
+      const Eigen::Vector3d F = e.step_impulse / last_dt_;
       const Eigen::Vector3d p = e.step_moment / e.step_weight;
       contact_forces_.push_back({e.manifold.b, e.manifold.a, p, F});
       contact_forces_.push_back({e.manifold.a, e.manifold.b, p, -F});
@@ -365,19 +420,19 @@ namespace particulate::rigid {
                        return x.body != y.body ? x.body < y.body :
                                                  x.other < y.other;
                      });
-    force_offsets_.assign(bodies_.size() + 1, 0);
     for (const ContactForce &f : contact_forces_)
       ++force_offsets_[f.body + 1];
     for (unsigned int i = 0; i < bodies_.size(); ++i)
       force_offsets_[i + 1] += force_offsets_[i];
+  }
 
-    stats_.pairs = graph_.edges().size();
-    for (const ContactEdge &e : graph_.edges())
-      stats_.contacts += e.manifold.points.size();
-    for (RigidBody &b : bodies_)
-      b.clear_accumulators();
-    time_ += dt;
-    ++step_number_;
+
+
+  const std::vector<ContactForce> &
+  World::all_contact_forces() const
+  {
+    assemble_contact_forces();
+    return contact_forces_;
   }
 
 
@@ -385,6 +440,7 @@ namespace particulate::rigid {
   std::vector<ContactForce>
   World::contact_forces(const BodyId id) const
   {
+    assemble_contact_forces();
     if (id >= bodies_.size())
       throw std::out_of_range("rigid::World::contact_forces(): no body "
                               + std::to_string(id));

@@ -1,6 +1,6 @@
 // Spheres (radii uniform in [4, 6] mm) poured into an open box of
-// 0.1 m x 0.1 m come to rest: kinetic energy below 1e-6 of the potential
-// energy released, the deepest overlap below 1 % of the smallest radius,
+// 0.1 m x 0.1 m come to rest: translational kinetic energy below 1e-6 of
+// the potential energy, the deepest overlap below 1 % of the smallest radius,
 // and no sphere outside the box. Usage: rigid_pouring [N] [solver]
 // (default 400 spheres, sequential impulses; the validation run uses 10^4).
 #include <particulate/rigid/scene.h>
@@ -11,6 +11,18 @@
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+
+namespace {
+  double
+  translational_energy(const World &w)
+  {
+    double e = 0.;
+    for (const auto &b : w.bodies())
+      if (!b.is_fixed())
+        e += 0.5 * b.mass() * b.linear_velocity.squaredNorm();
+    return e;
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -43,8 +55,10 @@ main(int argc, char **argv)
   for (int step = 1; step <= 20000; ++step)
     {
       w.step(dt);
-      if (step % 100 == 0 && w.kinetic_energy() < 1.e-6 * pe0
-          && step * dt > 0.3)
+      // Translational energy: a sphere may keep spinning about the vertical
+      // (point contacts have no torsional or rolling resistance).
+      if (step % 100 == 0 && step * dt > 0.3
+          && translational_energy(w) < 1.e-6 * pe0)
         {
           t_rest = step * dt;
           break;

@@ -37,6 +37,7 @@ namespace particulate::rigid {
 
   private:
     std::vector<Eigen::Vector3d> f_, t_;
+    std::vector<Eigen::Matrix3d> inv_I_;
   };
 } // namespace particulate::rigid
 

@@ -65,12 +65,20 @@ namespace particulate::rigid {
     validate() const;
 
   private:
+    /** A hash-table slot: 16 bytes so that probing stays in cache. The
+     * key packs 21 bits per cell coordinate (cells more than 2^20 apart
+     * alias, which only costs exact overlap tests of far-apart objects,
+     * never a missed or duplicated pair). */
     struct Cell
     {
-      std::int64_t x = 0, y = 0, z = 0;
-      int          head  = -1; // first object, -1: empty
-      bool         used  = false;
-      unsigned int count = 0;
+      std::uint64_t key   = 0;
+      int           head  = -1;  // first object, -1: empty
+      unsigned int  count = ~0u; // number of objects; ~0u: slot unused
+      bool
+      used() const
+      {
+        return count != ~0u;
+      }
     };
     struct Level
     {
@@ -79,6 +87,8 @@ namespace particulate::rigid {
       unsigned int      n_used_slots = 0;
       unsigned int      n_objects    = 0;
     };
+    static std::uint64_t
+    pack(std::int64_t x, std::int64_t y, std::int64_t z);
     struct Object
     {
       int          level = -1; // -1: unbounded or not inserted

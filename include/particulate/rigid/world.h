@@ -36,6 +36,10 @@ namespace particulate::rigid {
     double dem_steps_per_contact = 20.;
     /** Ratio of cell sizes of successive hash-grid levels. */
     double grid_level_ratio = 2.;
+    /** DEM only: Verlet skin in m added to the bounding spheres; the broad
+     * phase reruns only when some body has moved more than half of it. 0
+     * selects 20 % of the smallest bounding radius. */
+    double broad_phase_skin = 0.;
 
     /** Throws std::invalid_argument naming the bad entry. */
     void
@@ -151,10 +155,7 @@ namespace particulate::rigid {
     contact_forces(BodyId id) const;
     /** All contact forces of the last step, sorted by body. */
     const std::vector<ContactForce> &
-    all_contact_forces() const
-    {
-      return contact_forces_;
-    }
+    all_contact_forces() const;
 
     /** Total kinetic energy in J. */
     double
@@ -190,6 +191,8 @@ namespace particulate::rigid {
   private:
     void
     broad_phase(double horizon);
+    bool
+    skin_exceeded() const;
     void
     narrow_phase(double h);
     unsigned int
@@ -205,14 +208,20 @@ namespace particulate::rigid {
     std::vector<BroadPhaseProxy>   proxies_;
     std::vector<BodyPair>          pairs_;
     std::vector<ContactEdge>       dropped_;
-    std::vector<ContactForce>      contact_forces_;
-    std::vector<std::size_t>       force_offsets_;
-    std::vector<Eigen::Vector3d>   applied_force_, applied_torque_;
-    double                         margin_      = 0.;
-    double                         min_radius_  = 0.;
-    double                         time_        = 0.;
-    unsigned long                  step_number_ = 0;
-    StepStatistics                 stats_;
+    void
+                                      assemble_contact_forces() const;
+    mutable std::vector<ContactForce> contact_forces_;
+    mutable std::vector<std::size_t>  force_offsets_;
+    mutable bool                      forces_valid_ = true;
+    double                            last_dt_      = 0.;
+    std::vector<Eigen::Vector3d>      applied_force_, applied_torque_;
+    std::vector<Eigen::Vector3d>      broad_positions_;
+    double                            skin_        = 0.;
+    double                            margin_      = 0.;
+    double                            min_radius_  = 0.;
+    double                            time_        = 0.;
+    unsigned long                     step_number_ = 0;
+    StepStatistics                    stats_;
   };
 } // namespace particulate::rigid
 
