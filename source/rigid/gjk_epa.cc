@@ -190,9 +190,9 @@ namespace particulate::rigid {
       double scale = 0.;
       for (const auto &v : verts)
         scale = std::max(scale, v.w.norm());
-      const double tol = 1.e-9 * std::max(scale, 1.e-300);
+      const double tol = 1.e-7 * std::max(scale, 1.e-300);
 
-      for (int iter = 0; iter < 128; ++iter)
+      for (int iter = 0; iter < 64; ++iter)
         {
           int best = -1;
           for (unsigned int f = 0; f < faces.size(); ++f)
@@ -202,7 +202,7 @@ namespace particulate::rigid {
             return false;
           const Face   F = faces[best];
           const Vertex s = support(A, B, F.n);
-          if (s.w.dot(F.n) - F.d < tol || iter == 127)
+          if (s.w.dot(F.n) - F.d < tol || iter == 63)
             {
               // Barycentric coordinates of the origin's projection.
               const Eigen::Vector3d p = F.d * F.n;
@@ -225,7 +225,7 @@ namespace particulate::rigid {
                 = l0 * verts[F.i].b + l1 * verts[F.j].b + l2 * verts[F.k].b;
               out.normal    = F.n;
               out.distance  = -F.d;
-              out.converged = iter < 127;
+              out.converged = iter < 63;
               return true;
             }
           // Remove the faces that see the new vertex and stitch the horizon.
@@ -261,132 +261,178 @@ namespace particulate::rigid {
 
 
 
+  namespace {
+    ConvexDistance
+    gjk_epa_full(const ConvexPlacement &A,
+                 const ConvexPlacement &B,
+                 const Eigen::Vector3d &guess,
+                 const bool             penetration);
+  }
+
+
+
   ConvexDistance
   gjk_epa(const ConvexPlacement &A,
           const ConvexPlacement &B,
           const Eigen::Vector3d &guess)
   {
-    ConvexDistance  out;
-    Eigen::Vector3d d = guess.squaredNorm() > 0. ?
-                          guess :
-                          Eigen::Vector3d(B.position - A.position);
-    if (!(d.squaredNorm() > 0.))
-      d = Eigen::Vector3d::UnitZ();
-    // Search along -v where v = a - b is the current closest point: start
-    // with the vertex furthest in the direction from B to A.
-    Simplex s;
-    s.v[0]                  = support(A, B, -d);
-    s.lambda[0]             = 1.;
-    s.n                     = 1;
-    Eigen::Vector3d v       = s.v[0].w;
-    double          scale   = std::max(v.norm(), 1.e-300);
-    bool            overlap = false;
-    double          prev    = std::numeric_limits<double>::infinity();
-    unsigned int    it      = 0;
-    for (; it < 64; ++it)
+    // Round shapes: distance between the cores minus the radii, exact for
+    // shallow overlaps; EPA on the full shapes only when the cores touch.
+    const double ca = A.shape->core_radius(), cb = B.shape->core_radius();
+    if (ca > 0. || cb > 0.)
       {
-        const double vv = v.squaredNorm();
-        if (vv <= 1.e-24 * scale * scale)
+        ConvexPlacement Ac = A, Bc = B;
+        Ac.shrink        = ca;
+        Bc.shrink        = cb;
+        ConvexDistance r = gjk_epa_full(Ac, Bc, guess, false);
+        if (r.converged && r.distance > 1.e-12 * (ca + cb))
           {
-            overlap = true;
-            break;
+            r.point_a += ca * r.normal;
+            r.point_b -= cb * r.normal;
+            r.distance -= ca + cb;
+            return r;
           }
-        const Vertex w = support(A, B, -v);
-        scale          = std::max(scale, w.w.norm());
-        if (vv - v.dot(w.w) <= 1.e-12 * vv)
-          break;
-        bool dup = false;
-        for (int i = 0; i < s.n; ++i)
-          dup |= (s.v[i].w - w.w).squaredNorm() <= 1.e-28 * scale * scale;
-        if (dup)
-          break;
-        s.v[s.n]      = w;
-        s.lambda[s.n] = 0.;
-        ++s.n;
-        if (s.n == 2)
-          solve2(s);
-        else if (s.n == 3)
-          solve3(s);
-        else if (solve4(s))
-          {
-            overlap = true;
-            break;
-          }
-        v               = s.closest();
-        const double nv = v.squaredNorm();
-        if (nv >= prev)
-          break; // no progress: numerically converged
-        prev = nv;
       }
-    out.iterations = it;
-
-    if (!overlap)
-      {
-        out.point_a = Eigen::Vector3d::Zero();
-        out.point_b = Eigen::Vector3d::Zero();
-        for (int i = 0; i < s.n; ++i)
-          {
-            out.point_a += s.lambda[i] * s.v[i].a;
-            out.point_b += s.lambda[i] * s.v[i].b;
-          }
-        const double dist = v.norm();
-        out.distance      = dist;
-        out.normal        = dist > 0. ? Eigen::Vector3d(-v / dist) :
-                                        Eigen::Vector3d(d.normalized());
-        return out;
-      }
-
-    // Overlap: blow the simplex up to a tetrahedron around the origin.
-    std::vector<Vertex>   verts(s.v.begin(), s.v.begin() + s.n);
-    const Eigen::Vector3d axes[6]    = {Eigen::Vector3d::UnitX(),
-                                        Eigen::Vector3d::UnitY(),
-                                        Eigen::Vector3d::UnitZ(),
-                                        -Eigen::Vector3d::UnitX(),
-                                        -Eigen::Vector3d::UnitY(),
-                                        -Eigen::Vector3d::UnitZ()};
-    auto                  add_if_new = [&](const Eigen::Vector3d &dir) {
-      const Vertex w = support(A, B, dir);
-      for (const auto &x : verts)
-        if ((x.w - w.w).squaredNorm() <= 1.e-20 * scale * scale)
-          return false;
-      verts.push_back(w);
-      return true;
-    };
-    if (verts.size() == 1)
-      for (const auto &ax : axes)
-        if (add_if_new(ax))
-          break;
-    if (verts.size() == 2)
-      {
-        const Eigen::Vector3d e = verts[1].w - verts[0].w;
-        int                   k;
-        e.cwiseAbs().minCoeff(&k);
-        Eigen::Vector3d t       = Eigen::Vector3d::Zero();
-        t[k]                    = 1.;
-        const Eigen::Vector3d p = e.cross(t).normalized();
-        for (int r = 0; r < 6 && verts.size() == 2; ++r)
-          add_if_new(Eigen::AngleAxisd(r * M_PI / 3., e.normalized()) * p);
-      }
-    if (verts.size() == 3)
-      {
-        const Eigen::Vector3d n
-          = (verts[1].w - verts[0].w).cross(verts[2].w - verts[0].w);
-        if (!add_if_new(n))
-          add_if_new(-n);
-      }
-    if (verts.size() == 4)
-      {
-        if (epa(A, B, verts, out))
-          return out;
-      }
-    // Fallback (degenerate polytope): centre-to-centre normal, zero depth.
-    out.converged = false;
-    out.normal    = (B.position - A.position).normalized();
-    if (!out.normal.allFinite())
-      out.normal = Eigen::Vector3d::UnitZ();
-    out.point_a  = A.support(out.normal);
-    out.point_b  = B.support(-out.normal);
-    out.distance = (out.point_b - out.point_a).dot(out.normal);
-    return out;
+    return gjk_epa_full(A, B, guess, true);
   }
+
+
+
+  namespace {
+    ConvexDistance
+    gjk_epa_full(const ConvexPlacement &A,
+                 const ConvexPlacement &B,
+                 const Eigen::Vector3d &guess,
+                 const bool             penetration)
+    {
+      ConvexDistance  out;
+      Eigen::Vector3d d = guess.squaredNorm() > 0. ?
+                            guess :
+                            Eigen::Vector3d(B.position - A.position);
+      if (!(d.squaredNorm() > 0.))
+        d = Eigen::Vector3d::UnitZ();
+      // Search along -v where v = a - b is the current closest point: start
+      // with the vertex furthest in the direction from B to A.
+      Simplex s;
+      s.v[0]                  = support(A, B, -d);
+      s.lambda[0]             = 1.;
+      s.n                     = 1;
+      Eigen::Vector3d v       = s.v[0].w;
+      double          scale   = std::max(v.norm(), 1.e-300);
+      bool            overlap = false;
+      double          prev    = std::numeric_limits<double>::infinity();
+      unsigned int    it      = 0;
+      for (; it < 64; ++it)
+        {
+          const double vv = v.squaredNorm();
+          if (vv <= 1.e-24 * scale * scale)
+            {
+              overlap = true;
+              break;
+            }
+          const Vertex w = support(A, B, -v);
+          scale          = std::max(scale, w.w.norm());
+          if (vv - v.dot(w.w) <= 1.e-12 * vv)
+            break;
+          bool dup = false;
+          for (int i = 0; i < s.n; ++i)
+            dup |= (s.v[i].w - w.w).squaredNorm() <= 1.e-28 * scale * scale;
+          if (dup)
+            break;
+          s.v[s.n]      = w;
+          s.lambda[s.n] = 0.;
+          ++s.n;
+          if (s.n == 2)
+            solve2(s);
+          else if (s.n == 3)
+            solve3(s);
+          else if (solve4(s))
+            {
+              overlap = true;
+              break;
+            }
+          v               = s.closest();
+          const double nv = v.squaredNorm();
+          if (nv >= prev)
+            break; // no progress: numerically converged
+          prev = nv;
+        }
+      out.iterations = it;
+
+      if (!overlap)
+        {
+          out.point_a = Eigen::Vector3d::Zero();
+          out.point_b = Eigen::Vector3d::Zero();
+          for (int i = 0; i < s.n; ++i)
+            {
+              out.point_a += s.lambda[i] * s.v[i].a;
+              out.point_b += s.lambda[i] * s.v[i].b;
+            }
+          const double dist = v.norm();
+          out.distance      = dist;
+          out.normal        = dist > 0. ? Eigen::Vector3d(-v / dist) :
+                                          Eigen::Vector3d(d.normalized());
+          return out;
+        }
+
+      if (!penetration)
+        {
+          out.converged = false;
+          out.distance  = 0.;
+          return out;
+        }
+      // Overlap: blow the simplex up to a tetrahedron around the origin.
+      std::vector<Vertex>   verts(s.v.begin(), s.v.begin() + s.n);
+      const Eigen::Vector3d axes[6]    = {Eigen::Vector3d::UnitX(),
+                                          Eigen::Vector3d::UnitY(),
+                                          Eigen::Vector3d::UnitZ(),
+                                          -Eigen::Vector3d::UnitX(),
+                                          -Eigen::Vector3d::UnitY(),
+                                          -Eigen::Vector3d::UnitZ()};
+      auto                  add_if_new = [&](const Eigen::Vector3d &dir) {
+        const Vertex w = support(A, B, dir);
+        for (const auto &x : verts)
+          if ((x.w - w.w).squaredNorm() <= 1.e-20 * scale * scale)
+            return false;
+        verts.push_back(w);
+        return true;
+      };
+      if (verts.size() == 1)
+        for (const auto &ax : axes)
+          if (add_if_new(ax))
+            break;
+      if (verts.size() == 2)
+        {
+          const Eigen::Vector3d e = verts[1].w - verts[0].w;
+          int                   k;
+          e.cwiseAbs().minCoeff(&k);
+          Eigen::Vector3d t       = Eigen::Vector3d::Zero();
+          t[k]                    = 1.;
+          const Eigen::Vector3d p = e.cross(t).normalized();
+          for (int r = 0; r < 6 && verts.size() == 2; ++r)
+            add_if_new(Eigen::AngleAxisd(r * M_PI / 3., e.normalized()) * p);
+        }
+      if (verts.size() == 3)
+        {
+          const Eigen::Vector3d n
+            = (verts[1].w - verts[0].w).cross(verts[2].w - verts[0].w);
+          if (!add_if_new(n))
+            add_if_new(-n);
+        }
+      if (verts.size() == 4)
+        {
+          if (epa(A, B, verts, out))
+            return out;
+        }
+      // Fallback (degenerate polytope): centre-to-centre normal, zero depth.
+      out.converged = false;
+      out.normal    = (B.position - A.position).normalized();
+      if (!out.normal.allFinite())
+        out.normal = Eigen::Vector3d::UnitZ();
+      out.point_a  = A.support(out.normal);
+      out.point_b  = B.support(-out.normal);
+      out.distance = (out.point_b - out.point_a).dot(out.normal);
+      return out;
+    }
+  } // namespace
 } // namespace particulate::rigid

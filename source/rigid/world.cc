@@ -288,6 +288,38 @@ namespace particulate::rigid {
                          + b.angular_velocity.norm() * rb
                          + h * parameters_.gravity.norm());
           }
+        if (a.shape().type() == ShapeType::sphere
+            && b.shape().type() == ShapeType::sphere)
+          {
+            // Fast path for the most common pair (granular flows): update
+            // the single contact point in place, keeping its cache.
+            const double ra = a.bounding_radius(), rb = b.bounding_radius();
+            const Eigen::Vector3d d    = b.position - a.position;
+            const double          dist = d.norm();
+            const double          gap  = dist - ra - rb;
+            auto                 &pts  = e.manifold.points;
+            if (gap > margin)
+              {
+                pts.clear();
+                e.state = EdgeState::proximity;
+                continue;
+              }
+            const Eigen::Vector3d n = dist > 0. ? Eigen::Vector3d(d / dist) :
+                                                  Eigen::Vector3d::UnitZ();
+            if (pts.size() != 1 || pts[0].normal.dot(n) <= 0.9)
+              {
+                pts.assign(1, ContactPoint());
+                e.state = EdgeState::new_contact;
+              }
+            else
+              e.state = EdgeState::persistent_contact;
+            ContactPoint &c = pts[0];
+            c.position      = a.position + (ra + 0.5 * gap) * n;
+            c.normal        = n;
+            c.distance      = gap;
+            c.local_a       = a.orientation.conjugate() * (ra * n);
+            continue;
+          }
         old.swap(e.manifold.points);
         NarrowPhase::collide(a, b, margin, e);
         const double rmin = std::min(a.bounding_radius(), b.bounding_radius());

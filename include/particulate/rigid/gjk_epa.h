@@ -16,11 +16,19 @@ namespace particulate::rigid {
     /** Position of the body origin in m. */
     Eigen::Vector3d position;
 
+    /** Radius removed from the shape (0: the full shape; the core radius:
+     * the core point or segment of a sphere or capsule). */
+    double shrink = 0.;
+
     /** World support point in world direction @p d. */
     Eigen::Vector3d
     support(const Eigen::Vector3d &d) const
     {
-      return position + rotation * shape->support(rotation.transpose() * d);
+      Eigen::Vector3d s
+        = position + rotation * shape->support(rotation.transpose() * d);
+      if (shrink > 0.)
+        s -= shrink / d.norm() * d;
+      return s;
     }
   };
 

@@ -83,6 +83,16 @@ namespace particulate::rigid {
     virtual Eigen::Vector3d
     support(const Eigen::Vector3d &d_body) const;
 
+    /** Radius of the sphere swept over the shape's core: r for spheres
+     * (core: the centre) and capsules (core: the axis segment), 0 for the
+     * rest. GJK works on the cores when they are apart, which is exact and
+     * needs no EPA for shallow overlaps of round shapes. */
+    virtual double
+    core_radius() const
+    {
+      return 0.;
+    }
+
     /** Representative points on the surface in the body frame (mesh
      * vertices for mesh shapes). Used to test non-convex shapes against the
      * signed distance of the partner. Default: none. */

@@ -36,6 +36,11 @@ namespace particulate::rigid {
     support(const Eigen::Vector3d &d_body) const override;
     std::vector<Eigen::Vector3d>
     surface_points() const override;
+    double
+    core_radius() const override
+    {
+      return radius;
+    }
 
     /** Radius in m. */
     double radius;
