@@ -1,6 +1,9 @@
 #include <particulate/rigid/contact_graph.h>
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace particulate::rigid {
   void
@@ -167,5 +170,28 @@ namespace particulate::rigid {
             && start[v + 1] > start[v] && (pass == 1 || touches_fixed[v]))
           grow(v);
     return group_edges_.size();
+  }
+
+
+  void
+  ContactGraph::validate(const unsigned int n_bodies) const
+  {
+    auto fail = [](const std::string &what) {
+      throw std::logic_error("rigid::ContactGraph::validate(): " + what);
+    };
+    for (std::size_t k = 0; k < edges_.size(); ++k)
+      {
+        const ContactManifold &m = edges_[k].manifold;
+        if (!(m.a < m.b) || m.b >= n_bodies)
+          fail("edge " + std::to_string(k) + " has bad body ids");
+        if (k > 0
+            && !(BodyPair{edges_[k - 1].manifold.a, edges_[k - 1].manifold.b}
+                 < BodyPair{m.a, m.b}))
+          fail("edges not sorted or duplicated at " + std::to_string(k));
+        for (const ContactPoint &c : m.points)
+          if (std::abs(c.normal.norm() - 1.) > 1.e-9 || !c.position.allFinite()
+              || !std::isfinite(c.distance) || c.normal_impulse < 0.)
+            fail("edge " + std::to_string(k) + " has an invalid contact point");
+      }
   }
 } // namespace particulate::rigid

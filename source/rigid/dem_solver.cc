@@ -35,8 +35,11 @@ namespace particulate::rigid {
         if (e.manifold.points.empty())
           continue;
         const RigidBody &A = bodies[e.manifold.a], &B = bodies[e.manifold.b];
-        const ContactMaterial &mat  = ctx.material(e);
-        const double           zeta = damping_ratio(mat.restitution);
+        const ContactMaterial &mat = ctx.material(e);
+        // 2 zeta sqrt(k): the dashpots are these times sqrt(m_eff).
+        const double c_n = 2. * mat.damping_ratio * std::sqrt(mat.stiffness);
+        const double c_t
+          = 2. * mat.damping_ratio * std::sqrt(mat.tangential_stiffness);
         const double kn = mat.stiffness, kt = mat.tangential_stiffness;
         const Eigen::Matrix3d &Ia = inv_I_[e.manifold.a];
         const Eigen::Matrix3d &Ib = inv_I_[e.manifold.b];
@@ -63,9 +66,10 @@ namespace particulate::rigid {
             const double          m_eff = 1.
                                  / (A.inverse_mass() + B.inverse_mass()
                                     + ran.dot(Ia * ran) + rbn.dot(Ib * rbn));
-            const double          eta_n = 2. * zeta * std::sqrt(m_eff * kn);
-            const double          eta_t = 2. * zeta * std::sqrt(m_eff * kt);
-            const Eigen::Vector3d vt    = vrel - vn * n;
+            const double          sqrt_m = std::sqrt(m_eff);
+            const double          eta_n  = c_n * sqrt_m;
+            const double          eta_t  = c_t * sqrt_m;
+            const Eigen::Vector3d vt     = vrel - vn * n;
             // No clamp to f_n >= 0: the linear spring-dashpot then gives
             // exactly the restitution e whose damping ratio was chosen (a clamp
             // would raise the effective e by several percent); the brief

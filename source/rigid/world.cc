@@ -85,6 +85,7 @@ namespace particulate::rigid {
           p.dynamic_friction = c.dynamic_friction;
           p.stiffness        = c.dem_stiffness;
           p.tangential_stiffness = c.dem_tangential_stiffness;
+          p.damping_ratio        = DemSolver::damping_ratio(c.restitution);
         }
     return n - 1;
   }
@@ -384,6 +385,9 @@ namespace particulate::rigid {
 
         t0 = Clock::now();
         narrow_phase(h);
+#ifndef NDEBUG
+        graph_.validate(bodies_.size());
+#endif
         if (!dem) // the DEM works pairwise and needs no groups
           stats_.groups = graph_.compute_contact_groups(bodies_);
         stats_.time_narrow += seconds_since(t0);

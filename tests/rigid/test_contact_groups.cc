@@ -37,6 +37,7 @@ main()
   const BodyId free     = w.add_body(ball, 0, Eigen::Vector3d(3., 0., 2.));
   for (int s = 0; s < 20; ++s)
     w.step(1.e-3);
+  w.contact_graph().validate(w.n_bodies());
   const auto &g = w.contact_graph().group_of_body();
   std::cout << "groups:";
   for (unsigned int i = 0; i < w.n_bodies(); ++i)

@@ -96,6 +96,13 @@ namespace particulate::rigid {
     unsigned int
     compute_contact_groups(const std::vector<RigidBody> &bodies);
 
+    /** Consistency check (debug aid, Box2D style): edges sorted by pair
+     * without duplicates, a < b < @p n_bodies, contact normals of unit
+     * length, finite positions and gaps, non-negative normal impulses.
+     * Throws std::logic_error naming the first broken invariant. */
+    void
+    validate(unsigned int n_bodies) const;
+
     /** Group index per body (-1: fixed or contact-free). */
     const std::vector<int> &
     group_of_body() const

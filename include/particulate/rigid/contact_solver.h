@@ -47,6 +47,8 @@ namespace particulate::rigid {
     double stiffness = 1.e5;
     /** DEM tangential stiffness in N/m. */
     double tangential_stiffness = 2.e4;
+    /** DEM damping ratio zeta that yields `restitution` (see DemSolver). */
+    double damping_ratio = 1.;
   };
 
   /** Tuning of the contact solvers (all have safe defaults). */
