@@ -222,6 +222,13 @@ namespace particulate::rigid {
         *this = HierarchicalHashGrid(ratio_);
       }
     proxies_ = proxies;
+    spheres_.resize(proxies.size());
+    fixed_.resize(proxies.size());
+    for (std::size_t i = 0; i < proxies.size(); ++i)
+      {
+        spheres_[i] << proxies[i].center, proxies[i].radius;
+        fixed_[i] = proxies[i].fixed;
+      }
     objects_.resize(proxies.size());
     unbounded_.clear();
     n_moved_ = 0;
@@ -280,8 +287,14 @@ namespace particulate::rigid {
     pairs.clear();
     const unsigned int n  = objects_.size();
     const unsigned int nl = levels_.size();
-    auto report           = [&](const unsigned int a, const unsigned int b) {
-      if (proxies_overlap(proxies_[a], proxies_[b]))
+    // Bounded pairs are tested on the compact sphere array (32 bytes per
+    // body instead of the 72-byte proxy: the search is memory bound).
+    auto report = [&](const unsigned int a, const unsigned int b) {
+      if (fixed_[a] && fixed_[b])
+        return;
+      const Eigen::Vector4d &sa = spheres_[a], &sb = spheres_[b];
+      const double           r = sa[3] + sb[3];
+      if ((sa.head<3>() - sb.head<3>()).squaredNorm() <= r * r)
         pairs.push_back(a < b ? BodyPair{a, b} : BodyPair{b, a});
     };
     auto visit_cell = [&](const Level       &lvl,
@@ -352,7 +365,10 @@ namespace particulate::rigid {
     for (const unsigned int u : unbounded_)
       for (unsigned int id = 0; id < n; ++id)
         if (id != u && (std::isfinite(proxies_[id].radius) || id > u))
-          report(u, id);
+          {
+            if (proxies_overlap(proxies_[u], proxies_[id]))
+              pairs.push_back(u < id ? BodyPair{u, id} : BodyPair{id, u});
+          }
   }
 
 

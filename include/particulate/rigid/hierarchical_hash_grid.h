@@ -118,6 +118,8 @@ namespace particulate::rigid {
     std::vector<Level>           levels_;
     std::vector<Object>          objects_;
     std::vector<BroadPhaseProxy> proxies_;
+    std::vector<Eigen::Vector4d> spheres_; // centre and radius, compact
+    std::vector<char>            fixed_;
     std::vector<unsigned int>    unbounded_;
     unsigned int                 n_moved_ = 0;
   };
