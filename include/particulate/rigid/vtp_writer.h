@@ -1,0 +1,36 @@
+#ifndef particulate_rigid_vtp_writer_h
+#define particulate_rigid_vtp_writer_h
+
+#include <particulate/rigid/world.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace particulate::rigid {
+  /**
+   * ParaView output of the bodies as glyph points: one VTK PolyData file
+   * (`<prefix>_NNNNN.vtp`, plain ASCII XML) per call with a point per bounded
+   * body and the point data id, radius (bounding radius, m), velocity (m/s),
+   * angular_velocity (rad/s), orientation (quaternion w x y z) and fixed
+   * (0/1), plus the series file `<prefix>.pvd` that maps physical time to
+   * files (rewritten after each call, so it is valid at any moment).
+   * In ParaView: Glyph filter, sphere glyph, scale by "radius".
+   */
+  class VtpWriter
+  {
+  public:
+    /** @param prefix Path prefix, e.g. "output/bodies". */
+    explicit VtpWriter(std::string prefix);
+
+    /** Writes the current state; returns the file name. */
+    std::string
+    write(const World &world);
+
+  private:
+    std::string                                 prefix_;
+    std::vector<std::pair<double, std::string>> series_;
+  };
+} // namespace particulate::rigid
+
+#endif

@@ -1,0 +1,228 @@
+#ifndef particulate_rigid_world_h
+#define particulate_rigid_world_h
+
+#include <particulate/rigid/contact.h>
+#include <particulate/rigid/contact_graph.h>
+#include <particulate/rigid/contact_solver.h>
+#include <particulate/rigid/hierarchical_hash_grid.h>
+#include <particulate/rigid/material.h>
+#include <particulate/rigid/rigid_body.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace particulate::rigid {
+  /** Settings of a World (SI units). */
+  struct WorldParameters
+  {
+    /** Gravitational acceleration in m/s^2. */
+    Eigen::Vector3d gravity = Eigen::Vector3d(0., 0., -9.81);
+    /** Contact model (thesis §4.4). */
+    ContactSolverType contact_solver = ContactSolverType::sequential_impulses;
+    /** Tuning of the contact solver. */
+    ContactSolverParameters solver;
+    /** Substeps per step(dt) (at least 1). The DEM raises this so that a
+     * substep resolves the contact time (see dem_steps_per_contact). */
+    unsigned int substeps = 1;
+    /** Contact margin in m: gaps below it give contact points. 0 selects 2 %
+     * of the smallest bounding radius. */
+    double contact_margin = 0.;
+    /** Density in kg/m^3 of a fluid the bodies are fully immersed in; adds
+     * the buoyancy -rho_f V g. Leave 0 when the fluid solver's pressure
+     * already contains the hydrostatic part. */
+    double fluid_density = 0.;
+    /** DEM: substeps per binary contact time t_c = pi sqrt(m_eff / k_n). */
+    double dem_steps_per_contact = 20.;
+    /** Ratio of cell sizes of successive hash-grid levels. */
+    double grid_level_ratio = 2.;
+    /** DEM only: Verlet skin in m added to the bounding spheres; the broad
+     * phase reruns only when some body has moved more than half of it. 0
+     * selects 20 % of the smallest bounding radius. */
+    double broad_phase_skin = 0.;
+
+    /** Throws std::invalid_argument naming the bad entry. */
+    void
+    check() const;
+  };
+
+  /** What the last step did, with wall times per stage in s. */
+  struct StepStatistics
+  {
+    unsigned int substeps = 0, pairs = 0, contacts = 0, groups = 0,
+                 solver_iterations = 0;
+    double time_broad = 0., time_narrow = 0., time_solve = 0.,
+           time_integrate = 0.;
+  };
+
+  /**
+   * The rigid-body world: bodies, materials and the step recipe
+   *
+   *   for each substep:
+   *     broad phase   (HierarchicalHashGrid → pairs → ContactGraph)
+   *     narrow phase  (NarrowPhase → contact points, warm-start cache)
+   *     contact groups (ContactGraph, Algorithm 3)
+   *     solve         (ContactSolver: impulses or DEM forces, velocity kick)
+   *     integrate     (NewtonEulerIntegrator: positions and rotations)
+   *
+   * For the fluid coupling: set the hydrodynamic force and torque of each
+   * body with body(i).add_force() / add_torque() (or
+   * set_external_force_and_torque()) before step(dt); they act over the
+   * whole step and are cleared afterwards. Read per body position X,
+   * orientation, U, omega (world frame), mass(), inertia_world(),
+   * volume(), bounding_radius() from RigidBody, and after the step the
+   * contact forces with contact_forces(id).
+   */
+  class World
+  {
+  public:
+    /** @param parameters Settings; checked here. */
+    explicit World(const WorldParameters &parameters = WorldParameters());
+
+    /** Adds a material, returns its index. */
+    unsigned int
+    add_material(const Material &material);
+
+    /**
+     * Adds a body and returns its id (ids are 0, 1, 2, ... in order).
+     * @param shape Geometry in the body frame.
+     * @param material Material index from add_material().
+     * @param position Centre of mass in m.
+     * @param orientation Body-to-world rotation.
+     * @param fixed Whether the body is immovable (walls, obstacles;
+     * half-spaces must be fixed).
+     */
+    BodyId
+    add_body(std::shared_ptr<const Shape> shape,
+             unsigned int                 material,
+             const Eigen::Vector3d       &position,
+             const Eigen::Quaterniond    &orientation
+             = Eigen::Quaterniond::Identity(),
+             bool fixed = false);
+
+    /** Number of bodies. */
+    unsigned int
+    n_bodies() const
+    {
+      return bodies_.size();
+    }
+    /** Body @p id. */
+    RigidBody &
+    body(BodyId id);
+    /** Body @p id. */
+    const RigidBody &
+    body(BodyId id) const;
+    /** All bodies, indexed by id. */
+    const std::vector<RigidBody> &
+    bodies() const
+    {
+      return bodies_;
+    }
+    /** Material @p i. */
+    const Material &
+    material(unsigned int i) const
+    {
+      return materials_.at(i);
+    }
+
+    /** Sets (replaces) the external force (N) and torque (N m) of a body
+     * for the next step, e.g. the hydrodynamic load. */
+    void
+    set_external_force_and_torque(BodyId                 id,
+                                  const Eigen::Vector3d &force,
+                                  const Eigen::Vector3d &torque);
+
+    /** Advances the world by @p dt seconds. */
+    void
+    step(double dt);
+
+    /** Simulated time in s. */
+    double
+    time() const
+    {
+      return time_;
+    }
+    /** Steps taken. */
+    unsigned long
+    step_number() const
+    {
+      return step_number_;
+    }
+
+    /** Contact forces on body @p id averaged over the last step (one entry
+     * per touching partner; the point is the impulse-weighted centre). */
+    std::vector<ContactForce>
+    contact_forces(BodyId id) const;
+    /** All contact forces of the last step, sorted by body. */
+    const std::vector<ContactForce> &
+    all_contact_forces() const;
+
+    /** Total kinetic energy in J. */
+    double
+    kinetic_energy() const;
+    /** Largest penetration depth in m among the current contact points (0
+     * if none overlaps). */
+    double
+    max_penetration() const;
+    /** FNV-1a hash of the bit patterns of all positions, orientations and
+     * velocities (determinism checks). */
+    std::uint64_t
+    state_hash() const;
+
+    /** The contact graph (edges, contact points, groups). */
+    const ContactGraph &
+    contact_graph() const
+    {
+      return graph_;
+    }
+    /** Statistics of the last step. */
+    const StepStatistics &
+    statistics() const
+    {
+      return stats_;
+    }
+    /** The settings. */
+    const WorldParameters &
+    parameters() const
+    {
+      return parameters_;
+    }
+
+  private:
+    void
+    broad_phase(double horizon);
+    bool
+    skin_exceeded() const;
+    void
+    narrow_phase(double h);
+    unsigned int
+    substeps_for(double dt) const;
+
+    WorldParameters                parameters_;
+    std::vector<RigidBody>         bodies_;
+    std::vector<Material>          materials_;
+    std::vector<ContactMaterial>   pair_materials_;
+    HierarchicalHashGrid           grid_;
+    ContactGraph                   graph_;
+    std::unique_ptr<ContactSolver> solver_;
+    std::vector<BroadPhaseProxy>   proxies_;
+    std::vector<BodyPair>          pairs_;
+    std::vector<ContactEdge>       dropped_;
+    void
+                                      assemble_contact_forces() const;
+    mutable std::vector<ContactForce> contact_forces_;
+    mutable std::vector<std::size_t>  force_offsets_;
+    mutable bool                      forces_valid_ = true;
+    double                            last_dt_      = 0.;
+    std::vector<Eigen::Vector3d>      applied_force_, applied_torque_;
+    std::vector<Eigen::Vector3d>      broad_positions_;
+    double                            skin_        = 0.;
+    double                            margin_      = 0.;
+    double                            min_radius_  = 0.;
+    double                            time_        = 0.;
+    unsigned long                     step_number_ = 0;
+    StepStatistics                    stats_;
+  };
+} // namespace particulate::rigid
+
+#endif

@@ -1,0 +1,109 @@
+#include <particulate/rigid/rigid_body.h>
+
+#include <limits>
+#include <stdexcept>
+
+namespace particulate::rigid {
+  RigidBody::RigidBody(std::shared_ptr<const Shape> shape,
+                       const unsigned int           material,
+                       const double                 density,
+                       const bool                   fixed)
+    : shape_(std::move(shape))
+    , material_(material)
+    , fixed_(fixed)
+    , inverse_mass_(0.)
+    , inertia_(
+        Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()))
+    , inverse_inertia_(Eigen::Vector3d::Zero())
+  {
+    if (!shape_)
+      throw std::invalid_argument("rigid::RigidBody: no shape given.");
+    if (!shape_->is_bounded() && !fixed)
+      throw std::invalid_argument(
+        "rigid::RigidBody: a " + shape_->name()
+        + " is unbounded and has infinite mass; add it as a fixed body.");
+    if (!fixed)
+      {
+        if (!(density > 0.) || !std::isfinite(density))
+          throw std::invalid_argument(
+            "rigid::RigidBody: a dynamic body needs a positive finite "
+            "density (kg/m^3); check the material.");
+        const double m   = density * shape_->volume();
+        inverse_mass_    = 1. / m;
+        inertia_         = density * shape_->unit_density_inertia();
+        inverse_inertia_ = inertia_.cwiseInverse();
+      }
+  }
+
+
+
+  double
+  RigidBody::mass() const
+  {
+    return fixed_ ? std::numeric_limits<double>::infinity() :
+                    1. / inverse_mass_;
+  }
+
+
+
+  Eigen::Matrix3d
+  RigidBody::inertia_world() const
+  {
+    const Eigen::Matrix3d R = rotation();
+    return R * inertia_.asDiagonal() * R.transpose();
+  }
+
+
+
+  Eigen::Matrix3d
+  RigidBody::inverse_inertia_world() const
+  {
+    const Eigen::Matrix3d R = rotation();
+    return R * inverse_inertia_.asDiagonal() * R.transpose();
+  }
+
+
+
+  void
+  RigidBody::apply_impulse(const Eigen::Vector3d &P, const Eigen::Vector3d &p)
+  {
+    if (fixed_)
+      return;
+    linear_velocity += inverse_mass_ * P;
+    angular_velocity += inverse_inertia_world() * (p - position).cross(P);
+  }
+
+
+
+  double
+  RigidBody::kinetic_energy() const
+  {
+    if (fixed_)
+      return 0.;
+    const Eigen::Vector3d wb = orientation.conjugate() * angular_velocity;
+    return 0.5
+           * (linear_velocity.squaredNorm() / inverse_mass_
+              + wb.dot(inertia_.cwiseProduct(wb)));
+  }
+
+
+
+  Eigen::Vector3d
+  RigidBody::linear_momentum() const
+  {
+    return fixed_ ? Eigen::Vector3d::Zero() :
+                    Eigen::Vector3d(linear_velocity / inverse_mass_);
+  }
+
+
+
+  Eigen::Vector3d
+  RigidBody::angular_momentum() const
+  {
+    if (fixed_)
+      return Eigen::Vector3d::Zero();
+    const Eigen::Vector3d wb = orientation.conjugate() * angular_velocity;
+    return position.cross(linear_momentum())
+           + orientation * inertia_.cwiseProduct(wb);
+  }
+} // namespace particulate::rigid
