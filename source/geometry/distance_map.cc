@@ -80,17 +80,25 @@ DistanceMap::build(const Shape &shape, const Parameters &prm)
   const std::size_t np = static_cast<std::size_t>(total);
   map.values.resize(np);
   map.normals.resize(3 * np);
+  // Grid lines along x go to the shape in one call, so that meshes can use
+  // each closest point as the search hint for the next.
   auto fill = [&](int k_begin, int k_end) {
+    std::vector<Eigen::Vector3d> line(map.n[0]), nrm;
+    std::vector<double>          dist;
     for (int k = k_begin; k < k_end; ++k)
       for (int j = 0; j < map.n[1]; ++j)
-        for (int i = 0; i < map.n[0]; ++i)
-          {
-            Eigen::Vector3d   nrm;
-            const std::size_t id = map.index(i, j, k);
-            map.values[id]       = shape.signed_distance(map.point(i, j, k), &nrm);
-            for (int d = 0; d < 3; ++d)
-              map.normals[3 * id + d] = static_cast<float>(nrm[d]);
-          }
+        {
+          for (int i = 0; i < map.n[0]; ++i)
+            line[i] = map.point(i, j, k);
+          shape.signed_distances(line, dist, &nrm);
+          for (int i = 0; i < map.n[0]; ++i)
+            {
+              const std::size_t id = map.index(i, j, k);
+              map.values[id]       = dist[i];
+              for (int d = 0; d < 3; ++d)
+                map.normals[3 * id + d] = static_cast<float>(nrm[i][d]);
+            }
+        }
   };
   const int threads =
     static_cast<int>(std::max(1u, std::min<unsigned int>(prm.n_threads, map.n[2])));

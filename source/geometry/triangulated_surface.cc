@@ -34,6 +34,29 @@ to_eigen(const Point &p)
 {
   return Eigen::Vector3d(p.x(), p.y(), p.z());
 }
+// Sign and normal from the unsigned query (shared by the single and the
+// batched distance).
+double
+signed_from(const Eigen::Vector3d &p,
+            const Eigen::Vector3d &closest,
+            const Eigen::Vector3d &pseudo,
+            const double           d,
+            const double           scale,
+            Eigen::Vector3d       *normal)
+{
+  const Eigen::Vector3d diff   = p - closest;
+  const bool            inside = diff.dot(pseudo) < 0.;
+  if (normal)
+    {
+      // The gradient of the signed distance points from the closest point
+      // to p outside, and from p to the closest point inside.
+      if (d > 1e-12 * scale)
+        *normal = inside ? Eigen::Vector3d(-diff / d) : Eigen::Vector3d(diff / d);
+      else
+        *normal = pseudo.normalized();
+    }
+  return inside ? -d : d;
+}
 } // namespace
 
 struct TriangulatedSurface::Impl
@@ -54,12 +77,18 @@ struct TriangulatedSurface::Impl
 
   // Unsigned distance, closest point and the pseudo-normal of the closest
   // feature.
+  using Hit = Tree::Point_and_primitive_id;
+
   double
   query(const Eigen::Vector3d &p,
         Eigen::Vector3d       &closest,
-        Eigen::Vector3d       &pseudo_normal) const
+        Eigen::Vector3d       &pseudo_normal,
+        Hit                   *hint = nullptr) const
   {
-    const auto hit = tree.closest_point_and_primitive(to_point(p));
+    const Hit hit = hint ? tree.closest_point_and_primitive(to_point(p), *hint)
+                         : tree.closest_point_and_primitive(to_point(p));
+    if (hint)
+      *hint = hit;
     closest        = to_eigen(hit.first);
     const std::size_t f = std::size_t(hit.second);
     const auto       &t = mesh.triangles[f];
@@ -180,19 +209,31 @@ TriangulatedSurface::signed_distance(const Eigen::Vector3d &p,
                                      Eigen::Vector3d       *normal) const
 {
   Eigen::Vector3d closest, pseudo;
-  const double    d      = impl->query(p, closest, pseudo);
-  const Eigen::Vector3d diff = p - closest;
-  const bool      inside = diff.dot(pseudo) < 0.;
-  if (normal)
+  const double    d = impl->query(p, closest, pseudo);
+  return signed_from(p, closest, pseudo, d, impl->box.extent().norm(), normal);
+}
+
+
+void
+TriangulatedSurface::signed_distances(
+  const std::vector<Eigen::Vector3d> &points,
+  std::vector<double>                &distances,
+  std::vector<Eigen::Vector3d>       *normals) const
+{
+  distances.resize(points.size());
+  if (normals)
+    normals->resize(points.size());
+  if (points.empty())
+    return;
+  const double    scale = impl->box.extent().norm();
+  Impl::Hit       hint  = impl->tree.closest_point_and_primitive(to_point(points[0]));
+  Eigen::Vector3d closest, pseudo;
+  for (std::size_t i = 0; i < points.size(); ++i)
     {
-      // The gradient of the signed distance points from the closest point
-      // to p outside, and from p to the closest point inside.
-      if (d > 1e-12 * (impl->box.extent().norm()))
-        *normal = inside ? Eigen::Vector3d(-diff / d) : Eigen::Vector3d(diff / d);
-      else
-        *normal = pseudo.normalized();
+      const double d = impl->query(points[i], closest, pseudo, &hint);
+      distances[i]   = signed_from(
+        points[i], closest, pseudo, d, scale, normals ? &(*normals)[i] : nullptr);
     }
-  return inside ? -d : d;
 }
 
 bool

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace particulate::geometry {
 
 /**
@@ -34,6 +36,21 @@ public:
   virtual double
   signed_distance(const Eigen::Vector3d &p,
                   Eigen::Vector3d       *normal = nullptr) const = 0;
+
+  /**
+   * Signed distances and normals of many points at once, in order, e.g. a
+   * line of distance-map grid points. The default calls signed_distance()
+   * per point; triangulated surfaces override it to reuse the previous
+   * closest point as a search hint, which is much faster for neighbouring
+   * points.
+   * @param points body-frame points [m]
+   * @param distances receives points.size() signed distances [m]
+   * @param normals if not null, receives points.size() outward normals
+   */
+  virtual void
+  signed_distances(const std::vector<Eigen::Vector3d> &points,
+                   std::vector<double>                &distances,
+                   std::vector<Eigen::Vector3d>       *normals = nullptr) const;
 
   /**
    * True if @p p (body frame) is inside or on the surface. The default uses

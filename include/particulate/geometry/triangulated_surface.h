@@ -41,6 +41,13 @@ public:
   signed_distance(const Eigen::Vector3d &p,
                   Eigen::Vector3d       *normal = nullptr) const override;
 
+  /** Uses each point's closest point as the AABB-tree search hint for the
+   *  next one. */
+  void
+  signed_distances(const std::vector<Eigen::Vector3d> &points,
+                   std::vector<double>                &distances,
+                   std::vector<Eigen::Vector3d> *normals = nullptr) const override;
+
   /** Exact side-of-mesh test (CGAL::Side_of_triangle_mesh); points on the
    *  surface count as inside. */
   bool
