@@ -34,7 +34,7 @@ finish(const char *name)
   return 0;
 }
 
-/** Folder with CGAL's sample meshes (data/meshes/*.off), or exit 77. */
+/** Folder with CGAL's sample meshes (data/meshes, OFF files), or exit 77. */
 inline std::string
 cgal_meshes_or_skip()
 {
