@@ -8,6 +8,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <functional>
 #include <filesystem>
@@ -149,6 +150,244 @@ orient_consistently(TriangleMesh &m)
         }
     }
   return true;
+}
+
+// CGAL's readers trust the counts in a file: an OFF header or a PLY list
+// claiming 10^9 entries makes them allocate gigabytes before failing. So
+// before handing a file to CGAL we check that every count it declares fits
+// in the bytes that follow. Returns an empty string if plausible, else the
+// reason.
+std::string
+implausible_counts(const std::string &path, const std::string &ext)
+{
+  std::ifstream in(path, std::ios::binary);
+  const std::string data((std::istreambuf_iterator<char>(in)), {});
+  const std::size_t size = data.size();
+  auto              lines_of = [&](std::size_t from) {
+    std::vector<std::vector<std::string>> lines;
+    std::istringstream                    text(data.substr(from));
+    std::string                           line;
+    while (std::getline(text, line))
+      {
+        const auto hash = line.find('#');
+        if (hash != std::string::npos)
+          line.resize(hash);
+        std::istringstream       ls(line);
+        std::vector<std::string> tokens;
+        for (std::string t; ls >> t;)
+          tokens.push_back(t);
+        if (!tokens.empty())
+          lines.push_back(std::move(tokens));
+      }
+    return lines;
+  };
+  auto count = [](const std::string &t, long double &v) {
+    char *end = nullptr;
+    v         = std::strtold(t.c_str(), &end);
+    return end != t.c_str() && *end == '\0';
+  };
+
+  if (ext == ".off")
+    {
+      if (data.find("BINARY") != std::string::npos
+          && data.find("BINARY") < 64)
+        return ""; // binary OFF: CGAL checks its reads; counts checked below
+      const auto lines = lines_of(0);
+      if (lines.empty())
+        return "";
+      // The keyword may carry the counts on its own line.
+      std::vector<std::string> head(lines[0].begin() + 1, lines[0].end());
+      std::size_t              next = 1;
+      if (head.empty() && lines.size() > 1)
+        head = lines[next++];
+      long double nv = 0, nf = 0;
+      if (head.size() < 2 || !count(head[0], nv) || !count(head[1], nf))
+        return "";
+      if (nv < 0 || nf < 0 || nv > size / 6. || nf > size / 4.)
+        return "its header declares " + head[0] + " vertices and " + head[1] +
+               " faces, more than the file's " + std::to_string(size) +
+               " bytes can hold";
+      // Tokens left in the file from each line on; a face cannot list more
+      // vertices than that.
+      std::vector<std::size_t> left(lines.size() + 1, 0);
+      for (std::size_t l = lines.size(); l-- > 0;)
+        left[l] = left[l + 1] + lines[l].size();
+      for (std::size_t l = next + static_cast<std::size_t>(nv);
+           l < lines.size() && l < next + static_cast<std::size_t>(nv + nf);
+           ++l)
+        {
+          long double k = 0;
+          if (!count(lines[l][0], k) || k < 0 || k > left[l])
+            return "face line " + std::to_string(l + 1) + " declares " +
+                   lines[l][0] + " vertices, more than the file holds";
+        }
+      return "";
+    }
+  if (ext == ".ply")
+    {
+      // The header as CGAL reads it: raw lines up to the one whose first
+      // word is end_header (no comment stripping, empty lines kept).
+      std::vector<std::vector<std::string>> header;
+      std::size_t                           body = 0;
+      bool                                  ended = false;
+      while (body < size && !ended)
+        {
+          std::size_t eol = data.find('\n', body);
+          eol             = eol == std::string::npos ? size : eol;
+          std::istringstream       ls(data.substr(body, eol - body));
+          std::vector<std::string> tokens;
+          for (std::string t; ls >> t;)
+            tokens.push_back(t);
+          body  = eol + 1;
+          ended = !tokens.empty() && tokens[0] == "end_header";
+          if (tokens.empty())
+            tokens.push_back("");
+          header.push_back(std::move(tokens));
+        }
+      if (!ended)
+        return "the PLY header has no end_header line";
+      body = std::min(body, size);
+      bool       ascii  = false, little = true;
+      struct Property
+      {
+        bool        list = false;
+        std::size_t count_bytes = 0, item_bytes = 0;
+      };
+      struct Element
+      {
+        long double           n = 0;
+        std::vector<Property> properties;
+      };
+      std::vector<Element> elements;
+      auto bytes_of = [](const std::string &t) -> std::size_t {
+        if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+          return 1;
+        if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+          return 2;
+        if (t == "int" || t == "uint" || t == "float" || t == "int32"
+            || t == "uint32" || t == "float32")
+          return 4;
+        if (t == "double" || t == "float64")
+          return 8;
+        return 0;
+      };
+      // CGAL's PLY reader trusts the header's structure too (a property
+      // before any element dereferences an empty list), so check it
+      // strictly: signature, format, known types, properties after an
+      // element.
+      if (header.size() < 3 || header[0][0] != "ply" || header[1].size() < 3
+          || header[1][0] != "format")
+        return "the PLY header does not start with 'ply' and a format line";
+      if (header[1][1] != "ascii" && header[1][1] != "binary_little_endian"
+          && header[1][1] != "binary_big_endian")
+        return "unknown PLY format '" + header[1][1] + "'";
+      ascii  = header[1][1] == "ascii";
+      little = header[1][1] != "binary_big_endian";
+      for (std::size_t h = 2; h < header.size(); ++h)
+        {
+          const auto &l = header[h];
+          if (l[0] == "end_header")
+            break;
+          if (l[0] == "comment" || l[0] == "obj_info")
+            continue;
+          if (l[0].empty())
+            return "the PLY header has an empty line";
+          if (l[0] == "element")
+            {
+              elements.emplace_back();
+              if (l.size() < 3 || !count(l[2], elements.back().n)
+                  || elements.back().n < 0 || elements.back().n > size)
+                return "its header declares " +
+                       (l.size() > 2 ? l[2] : std::string("no")) + " " +
+                       (l.size() > 1 ? l[1] : std::string("")) +
+                       " elements, more than the file's " +
+                       std::to_string(size) + " bytes can hold";
+            }
+          else if (l[0] == "property")
+            {
+              if (elements.empty())
+                return "a PLY property is declared before any element";
+              Property p;
+              if (l.size() > 1 && l[1] == "list")
+                {
+                  p.list        = true;
+                  p.count_bytes = l.size() > 4 ? bytes_of(l[2]) : 0;
+                  p.item_bytes  = l.size() > 4 ? bytes_of(l[3]) : 0;
+                  if (p.count_bytes == 0 || p.item_bytes == 0)
+                    return "a PLY list property has an unknown type";
+                }
+              else
+                {
+                  p.item_bytes = l.size() > 2 ? bytes_of(l[1]) : 0;
+                  if (p.item_bytes == 0)
+                    return "a PLY property has an unknown type";
+                }
+              elements.back().properties.push_back(p);
+            }
+          else
+            return "unknown PLY header keyword '" + l[0] + "'";
+        }
+      if (ascii)
+        {
+          // One element per line; a list count cannot exceed the tokens left
+          // on its line.
+          const auto  lines = lines_of(body);
+          std::size_t l     = 0;
+          for (const auto &e : elements)
+            for (long double i = 0; i < e.n && l < lines.size(); ++i, ++l)
+              {
+                std::size_t t = 0;
+                for (const auto &p : e.properties)
+                  {
+                    if (t >= lines[l].size())
+                      break;
+                    long double k = 0;
+                    if (p.list)
+                      {
+                        if (!count(lines[l][t], k) || k < 0
+                            || k > lines[l].size() - t - 1)
+                          return "line " + std::to_string(l + 1) +
+                                 " after the header declares a list of " +
+                                 lines[l][t] + " entries but holds fewer";
+                        t += 1 + static_cast<std::size_t>(k);
+                      }
+                    else
+                      ++t;
+                  }
+              }
+          return "";
+        }
+      // Binary: walk the elements; every list count must fit in the bytes
+      // left.
+      std::size_t pos = body;
+      for (const auto &e : elements)
+        for (long double i = 0; i < e.n; ++i)
+          for (const auto &p : e.properties)
+            {
+              if (!p.list)
+                {
+                  pos += p.item_bytes;
+                  continue;
+                }
+              if (p.count_bytes == 0 || pos + p.count_bytes > size)
+                return "";
+              unsigned long long k = 0;
+              for (std::size_t b = 0; b < p.count_bytes; ++b)
+                {
+                  const unsigned char c = static_cast<unsigned char>(
+                    data[pos + (little ? b : p.count_bytes - 1 - b)]);
+                  k |= static_cast<unsigned long long>(c) << (8 * b);
+                }
+              // A negative signed count reads as huge: refused alike.
+              pos += p.count_bytes;
+              if (p.item_bytes == 0 || k > (size - pos) / p.item_bytes)
+                return "a binary list declares " + std::to_string(k) +
+                       " entries, more than the file holds";
+              pos += k * p.item_bytes;
+            }
+      return "";
+    }
+  return "";
 }
 } // namespace
 
@@ -340,6 +579,11 @@ read_surface_mesh(const std::string &path, const MeshReadOptions &options)
   if (lower != ".off" && lower != ".stl" && lower != ".obj" && lower != ".ply")
     throw GeometryError(where + ": unknown extension '" + ext +
                         "'; supported are .off, .stl, .obj and .ply.");
+
+  const std::string implausible = implausible_counts(path, lower);
+  if (!implausible.empty())
+    throw GeometryError(where + ": the file is corrupt or truncated: " +
+                        implausible + ".");
 
   std::vector<Point>                    points;
   std::vector<std::vector<std::size_t>> polygons;
