@@ -76,6 +76,7 @@ DistanceMap::build(const Shape &shape, const Parameters &prm)
   map.x0 = box.center()
            - 0.5 * map.h
                * Eigen::Vector3d(map.n[0] - 1, map.n[1] - 1, map.n[2] - 1);
+  map.finish_setup();
 
   const std::size_t np = static_cast<std::size_t>(total);
   map.values.resize(np);
@@ -175,44 +176,76 @@ DistanceMap::build_cached(const TriangleMesh &mesh,
   return map;
 }
 
+void
+DistanceMap::finish_setup()
+{
+  x1    = x0 + h * Eigen::Vector3d(n[0] - 1, n[1] - 1, n[2] - 1);
+  inv_h = 1. / h;
+}
+
 double
 DistanceMap::distance(const Eigen::Vector3d &p, Eigen::Vector3d *normal) const
 {
   if (values.empty())
     throw GeometryError("DistanceMap::distance: the map is empty; build or "
                         "load it first.");
-  // Clamp to the grid box; outside it, add the distance to the box.
-  const Eigen::Vector3d upper = x0 + h * Eigen::Vector3d(n[0] - 1, n[1] - 1, n[2] - 1);
-  const Eigen::Vector3d q     = p.cwiseMax(x0).cwiseMin(upper);
-  const double          extra = (p - q).norm();
-
-  int    c[3];
-  double f[3];
+  // Locate the cell in O(1); outside the grid box, clamp and add the
+  // distance to the box.
+  double      f[3], extra2 = 0.;
+  std::size_t c[3];
   for (int d = 0; d < 3; ++d)
     {
-      const double s = (q[d] - x0[d]) / h;
-      c[d]           = std::min(std::max(static_cast<int>(std::floor(s)), 0), n[d] - 2);
-      f[d]           = s - c[d];
+      double q = p[d];
+      if (q < x0[d])
+        {
+          extra2 += (x0[d] - q) * (x0[d] - q);
+          q = x0[d];
+        }
+      else if (q > x1[d])
+        {
+          extra2 += (q - x1[d]) * (q - x1[d]);
+          q = x1[d];
+        }
+      const double s = (q - x0[d]) * inv_h;
+      int          i = static_cast<int>(s); // s >= 0: truncation = floor
+      i            = std::min(i, n[d] - 2);
+      c[d]         = static_cast<std::size_t>(i);
+      f[d]         = s - i;
     }
-  double          dist = 0.;
-  Eigen::Vector3d nrm  = Eigen::Vector3d::Zero();
-  for (int corner = 0; corner < 8; ++corner)
-    {
-      const int    di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
-      const double w  = (di ? f[0] : 1. - f[0]) * (dj ? f[1] : 1. - f[1])
-                       * (dk ? f[2] : 1. - f[2]);
-      const std::size_t id = index(c[0] + di, c[1] + dj, c[2] + dk);
-      dist += w * values[id];
-      if (normal)
-        nrm += w * Eigen::Vector3d(normals[3 * id], normals[3 * id + 1],
-                                   normals[3 * id + 2]);
-    }
+  const std::size_t sx = 1, sy = n[0], sz = std::size_t(n[0]) * n[1];
+  const std::size_t base = c[0] + sy * c[1] + sz * c[2];
+  const std::size_t id[8] = {base,           base + sx,
+                             base + sy,      base + sx + sy,
+                             base + sz,      base + sx + sz,
+                             base + sy + sz, base + sx + sy + sz};
+  const double      gx = 1. - f[0], gy = 1. - f[1], gz = 1. - f[2];
+  const double      w[8] = {gx * gy * gz,       f[0] * gy * gz,
+                            gx * f[1] * gz,     f[0] * f[1] * gz,
+                            gx * gy * f[2],     f[0] * gy * f[2],
+                            gx * f[1] * f[2],   f[0] * f[1] * f[2]};
+  double            dist = 0.;
+  for (int k = 0; k < 8; ++k)
+    dist += w[k] * values[id[k]];
   if (normal)
     {
-      const double len = nrm.norm();
-      *normal = len > 0. ? Eigen::Vector3d(nrm / len) : Eigen::Vector3d::UnitX();
+      double nx = 0., ny = 0., nz = 0.;
+      for (int k = 0; k < 8; ++k)
+        {
+          const float *g = &normals[3 * id[k]];
+          nx += w[k] * g[0];
+          ny += w[k] * g[1];
+          nz += w[k] * g[2];
+        }
+      const double len2 = nx * nx + ny * ny + nz * nz;
+      if (len2 > 0.)
+        {
+          const double inv = 1. / std::sqrt(len2);
+          *normal          = Eigen::Vector3d(nx * inv, ny * inv, nz * inv);
+        }
+      else
+        *normal = Eigen::Vector3d::UnitX();
     }
-  return dist + extra;
+  return extra2 > 0. ? dist + std::sqrt(extra2) : dist;
 }
 
 double
@@ -328,6 +361,7 @@ DistanceMap::load_checked(const std::string &path, const std::uint64_t expected)
     throw GeometryError(where + ": invalid grid spacing or size.");
   map.x0 = Eigen::Vector3d(geo[0], geo[1], geo[2]);
   map.h  = geo[3];
+  map.finish_setup();
   const auto np = static_cast<std::size_t>(total);
   // Check the length before allocating, so a corrupt header cannot ask for
   // gigabytes.

@@ -229,6 +229,12 @@ Ellipsoid::signed_distance(const Eigen::Vector3d &p,
   return level > 0. ? d : -d;
 }
 
+bool
+Ellipsoid::contains(const Eigen::Vector3d &p) const
+{
+  return p.cwiseQuotient(e).squaredNorm() <= 1.;
+}
+
 BoundingBox
 Ellipsoid::bounding_box() const
 {

@@ -21,6 +21,12 @@ Sphere::signed_distance(const Eigen::Vector3d &p, Eigen::Vector3d *normal) const
   return d - r;
 }
 
+bool
+Sphere::contains(const Eigen::Vector3d &p) const
+{
+  return p.squaredNorm() <= r * r;
+}
+
 BoundingBox
 Sphere::bounding_box() const
 {

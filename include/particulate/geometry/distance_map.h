@@ -176,6 +176,12 @@ private:
   std::vector<double> values;
   std::vector<float>  normals; // 3 per grid point
   std::uint64_t       key = 0; // cache key, 0 if not from build_cached
+  Eigen::Vector3d     x1 = Eigen::Vector3d::Zero(); // last grid point
+  double              inv_h = 0.;
+
+  // Derived members (x1, inv_h) after n, x0, h are set.
+  void
+  finish_setup();
 
   static DistanceMap
   load_checked(const std::string &path, const std::uint64_t expected_key);

@@ -26,6 +26,10 @@ public:
   signed_distance(const Eigen::Vector3d &p,
                   Eigen::Vector3d       *normal = nullptr) const override;
 
+  /** Closed-form test, cheaper than the distance. */
+  bool
+  contains(const Eigen::Vector3d &p) const override;
+
   BoundingBox
   bounding_box() const override;
 
