@@ -10,47 +10,48 @@
 
 namespace test {
 
-inline int failures = 0;
+  inline int failures = 0;
 
-inline void
-check(const bool ok, const std::string &what, const char *file, int line)
-{
-  if (!ok)
-    {
-      ++failures;
-      std::cerr << file << ":" << line << ": FAILED: " << what << std::endl;
-    }
-}
+  inline void
+  check(const bool ok, const std::string &what, const char *file, int line)
+  {
+    if (!ok)
+      {
+        ++failures;
+        std::cerr << file << ":" << line << ": FAILED: " << what << std::endl;
+      }
+  }
 
-inline int
-finish(const char *name)
-{
-  if (failures > 0)
-    {
-      std::cerr << name << ": " << failures << " check(s) failed" << std::endl;
-      return 1;
-    }
-  std::cout << name << ": all checks passed" << std::endl;
-  return 0;
-}
+  inline int
+  finish(const char *name)
+  {
+    if (failures > 0)
+      {
+        std::cerr << name << ": " << failures << " check(s) failed"
+                  << std::endl;
+        return 1;
+      }
+    std::cout << name << ": all checks passed" << std::endl;
+    return 0;
+  }
 
-/** Folder with CGAL's sample meshes (data/meshes, OFF files), or exit 77. */
-inline std::string
-cgal_meshes_or_skip()
-{
-  const char *env = std::getenv("PARTICULATE_CGAL_DATA_DIR");
-  const std::string dir =
-    std::string(env ? env : "cgal-data") + "/data/meshes";
-  if (!std::filesystem::is_directory(dir))
-    {
-      std::cout << "SKIP: CGAL sample meshes not found in '" << dir
-                << "'. Run scripts/setup.sh or unpack "
-                   "/usr/share/doc/libcgal-dev/data.tar.gz there."
-                << std::endl;
-      std::exit(77);
-    }
-  return dir;
-}
+  /** Folder with CGAL's sample meshes (data/meshes, OFF files), or exit 77. */
+  inline std::string
+  cgal_meshes_or_skip()
+  {
+    const char       *env = std::getenv("PARTICULATE_CGAL_DATA_DIR");
+    const std::string dir
+      = std::string(env ? env : "cgal-data") + "/data/meshes";
+    if (!std::filesystem::is_directory(dir))
+      {
+        std::cout << "SKIP: CGAL sample meshes not found in '" << dir
+                  << "'. Run scripts/setup.sh or unpack "
+                     "/usr/share/doc/libcgal-dev/data.tar.gz there."
+                  << std::endl;
+        std::exit(77);
+      }
+    return dir;
+  }
 
 } // namespace test
 

@@ -12,81 +12,84 @@
 #include <random>
 #include <sstream>
 
-#include <unistd.h>
-
 #include "check.h"
+#include <unistd.h>
 
 using namespace particulate::geometry;
 using Eigen::Vector3d;
 
 namespace {
-// Points where the exact distance is smooth: |d| <= band, and (for the
-// torus) away from the tube's centre circle and the axis.
-std::vector<Vector3d>
-sample(const Shape &s, const double band, const int count)
-{
-  std::mt19937                           rng(42);
-  const BoundingBox                      box = s.bounding_box();
-  std::uniform_real_distribution<double> u(0., 1.);
-  std::vector<Vector3d>                  pts;
-  while (static_cast<int>(pts.size()) < count)
-    {
-      const Vector3d p =
-        box.lower + box.extent().cwiseProduct(Vector3d(u(rng), u(rng), u(rng)));
-      if (std::abs(s.signed_distance(p)) <= band)
-        pts.push_back(p);
-    }
-  return pts;
-}
+  // Points where the exact distance is smooth: |d| <= band, and (for the
+  // torus) away from the tube's centre circle and the axis.
+  std::vector<Vector3d>
+  sample(const Shape &s, const double band, const int count)
+  {
+    std::mt19937                           rng(42);
+    const BoundingBox                      box = s.bounding_box();
+    std::uniform_real_distribution<double> u(0., 1.);
+    std::vector<Vector3d>                  pts;
+    while (static_cast<int>(pts.size()) < count)
+      {
+        const Vector3d p
+          = box.lower
+            + box.extent().cwiseProduct(Vector3d(u(rng), u(rng), u(rng)));
+        if (std::abs(s.signed_distance(p)) <= band)
+          pts.push_back(p);
+      }
+    return pts;
+  }
 
-// Least-squares slope of log(err) against log(h).
-double
-rate(const std::vector<double> &h, const std::vector<double> &e)
-{
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = h.size();
-  for (std::size_t i = 0; i < h.size(); ++i)
-    {
-      const double x = std::log(h[i]), y = std::log(e[i]);
-      sx += x;
-      sy += y;
-      sxx += x * x;
-      sxy += x * y;
-    }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
+  // Least-squares slope of log(err) against log(h).
+  double
+  rate(const std::vector<double> &h, const std::vector<double> &e)
+  {
+    double       sx = 0, sy = 0, sxx = 0, sxy = 0;
+    const double n = h.size();
+    for (std::size_t i = 0; i < h.size(); ++i)
+      {
+        const double x = std::log(h[i]), y = std::log(e[i]);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+      }
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
 
-void
-convergence(const Shape &shape, const double band, const char *name)
-{
-  const auto          pts = sample(shape, band, 20000);
-  std::vector<double> hs = {0.1, 0.05, 0.025}, rms, max;
-  std::cout << name << ": h, rms error, max error, normal max angle [rad]\n";
-  for (const double h : hs)
-    {
-      const DistanceMap map = DistanceMap::build(shape, {h, 0.2, 2});
-      double            s2 = 0., m = 0., angle = 0.;
-      for (const auto &p : pts)
-        {
-          Vector3d     n_map, n_exact;
-          const double e = map.distance(p, &n_map) - shape.signed_distance(p, &n_exact);
-          s2 += e * e;
-          m     = std::max(m, std::abs(e));
-          angle = std::max(angle, std::acos(std::min(1., n_map.dot(n_exact))));
-        }
-      rms.push_back(std::sqrt(s2 / pts.size()));
-      max.push_back(m);
-      std::cout << "  " << h << "  " << rms.back() << "  " << m << "  " << angle
-                << "\n";
-    }
-  const double r_rms = rate(hs, rms), r_max = rate(hs, max);
-  std::cout << "  rate (rms) " << r_rms << ", rate (max) " << r_max << std::endl;
-  std::ostringstream msg;
-  msg << name << ": convergence rate " << r_rms << " (rms) / " << r_max
-      << " (max) should lie in [1.8, 2.2]";
-  CHECK_MSG(r_rms >= 1.8 && r_rms <= 2.2 && r_max >= 1.8 && r_max <= 2.2,
-            msg.str());
-}
+  void
+  convergence(const Shape &shape, const double band, const char *name)
+  {
+    const auto          pts = sample(shape, band, 20000);
+    std::vector<double> hs  = {0.1, 0.05, 0.025}, rms, max;
+    std::cout << name << ": h, rms error, max error, normal max angle [rad]\n";
+    for (const double h : hs)
+      {
+        const DistanceMap map = DistanceMap::build(shape, {h, 0.2, 2});
+        double            s2 = 0., m = 0., angle = 0.;
+        for (const auto &p : pts)
+          {
+            Vector3d     n_map, n_exact;
+            const double e
+              = map.distance(p, &n_map) - shape.signed_distance(p, &n_exact);
+            s2 += e * e;
+            m = std::max(m, std::abs(e));
+            angle
+              = std::max(angle, std::acos(std::min(1., n_map.dot(n_exact))));
+          }
+        rms.push_back(std::sqrt(s2 / pts.size()));
+        max.push_back(m);
+        std::cout << "  " << h << "  " << rms.back() << "  " << m << "  "
+                  << angle << "\n";
+      }
+    const double r_rms = rate(hs, rms), r_max = rate(hs, max);
+    std::cout << "  rate (rms) " << r_rms << ", rate (max) " << r_max
+              << std::endl;
+    std::ostringstream msg;
+    msg << name << ": convergence rate " << r_rms << " (rms) / " << r_max
+        << " (max) should lie in [1.8, 2.2]";
+    CHECK_MSG(r_rms >= 1.8 && r_rms <= 2.2 && r_max >= 1.8 && r_max <= 2.2,
+              msg.str());
+  }
 } // namespace
 
 int
@@ -102,8 +105,8 @@ main()
   const DistanceMap map = DistanceMap::build(sphere, {0.05, 0.1, 1});
   {
     const DistanceMapData d = map.export_data();
-    CHECK(d.nx == map.n_points()[0] && d.ny == map.n_points()[1] &&
-          d.nz == map.n_points()[2]);
+    CHECK(d.nx == map.n_points()[0] && d.ny == map.n_points()[1]
+          && d.nz == map.n_points()[2]);
     CHECK(d.values.size() == std::size_t(d.nx) * d.ny * d.nz);
     double worst = 0.;
     for (int k = 0; k < d.nz; k += 3)
@@ -113,11 +116,13 @@ main()
             const Vector3d p(d.origin[0] + i * d.spacing[0],
                              d.origin[1] + j * d.spacing[1],
                              d.origin[2] + k * d.spacing[2]);
-            worst = std::max(worst, std::abs(d.values[i + d.nx * (j + d.ny * k)] -
-                                             sphere.signed_distance(p)));
+            worst = std::max(worst,
+                             std::abs(d.values[i + d.nx * (j + d.ny * k)]
+                                      - sphere.signed_distance(p)));
           }
-    CHECK_MSG(worst < 1e-6, "exported values are the exact distances at "
-                            "origin + (i, j, k) spacing (float precision)");
+    CHECK_MSG(worst < 1e-6,
+              "exported values are the exact distances at "
+              "origin + (i, j, k) spacing (float precision)");
     // The grid covers the bounding box plus the margin.
     CHECK(map.grid_box().contains(Vector3d::Constant(0.79)));
     CHECK(map.grid_box().contains(Vector3d::Constant(-0.79)));
@@ -126,13 +131,14 @@ main()
   // Pose: a world query equals the body query at R^T (x - t), and the normal
   // turns with the body.
   {
-    const Pose pose(Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized())),
+    const Pose        pose(Eigen::Quaterniond(
+                      Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized())),
                     Vector3d(3., -1., 2.));
     const Torus       torus(1., 0.3);
     const DistanceMap tmap = DistanceMap::build(torus, {0.02, 0.1, 2});
     std::mt19937      rng(1);
     std::uniform_real_distribution<double> u(-1.2, 1.2);
-    double            worst_d = 0., worst_n = 0.;
+    double                                 worst_d = 0., worst_n = 0.;
     for (int i = 0; i < 2000; ++i)
       {
         const Vector3d b(u(rng), u(rng), u(rng) * 0.3);
@@ -157,13 +163,14 @@ main()
   // Disk cache: the second call reads the file and gives identical values;
   // another spacing is another file; a corrupt file is rebuilt.
   {
-    const std::string dir = (std::filesystem::temp_directory_path() /
-                             ("particulate_dmap_" + std::to_string(::getpid())))
-                              .string();
-    const TriangleMesh mesh = mesh_generators::icosphere(0.5, 3);
+    const std::string dir
+      = (std::filesystem::temp_directory_path()
+         / ("particulate_dmap_" + std::to_string(::getpid())))
+          .string();
+    const TriangleMesh            mesh = mesh_generators::icosphere(0.5, 3);
     const DistanceMap::Parameters prm{0.05, 0.1, 1};
-    bool               loaded = true;
-    const DistanceMap  a      = DistanceMap::build_cached(mesh, prm, dir, &loaded);
+    bool                          loaded = true;
+    const DistanceMap a = DistanceMap::build_cached(mesh, prm, dir, &loaded);
     CHECK_MSG(!loaded, "first build_cached builds");
     const DistanceMap b = DistanceMap::build_cached(mesh, prm, dir, &loaded);
     CHECK_MSG(loaded, "second build_cached reads the cache");
@@ -171,18 +178,19 @@ main()
     for (int k = 0; same && k < a.n_points()[2]; ++k)
       for (int j = 0; j < a.n_points()[1]; ++j)
         for (int i = 0; i < a.n_points()[0]; ++i)
-          same = same && a.value(i, j, k) == b.value(i, j, k) &&
-                 a.normal(i, j, k) == b.normal(i, j, k);
+          same = same && a.value(i, j, k) == b.value(i, j, k)
+                 && a.normal(i, j, k) == b.normal(i, j, k);
     CHECK_MSG(same, "cached map is bit-identical");
     DistanceMap::Parameters finer = prm;
     finer.spacing                 = 0.04;
-    CHECK(DistanceMap::cache_file_name(mesh, finer) !=
-          DistanceMap::cache_file_name(mesh, prm));
+    CHECK(DistanceMap::cache_file_name(mesh, finer)
+          != DistanceMap::cache_file_name(mesh, prm));
     TriangleMesh moved = mesh.scaled(1.01);
-    CHECK(DistanceMap::cache_file_name(moved, prm) !=
-          DistanceMap::cache_file_name(mesh, prm));
+    CHECK(DistanceMap::cache_file_name(moved, prm)
+          != DistanceMap::cache_file_name(mesh, prm));
     // Corrupt the file: truncate it.
-    const std::string file = dir + "/" + DistanceMap::cache_file_name(mesh, prm);
+    const std::string file
+      = dir + "/" + DistanceMap::cache_file_name(mesh, prm);
     std::filesystem::resize_file(file, 100);
     const DistanceMap c = DistanceMap::build_cached(mesh, prm, dir, &loaded);
     CHECK_MSG(!loaded && c.value(3, 4, 5) == a.value(3, 4, 5),
@@ -195,8 +203,8 @@ main()
       }
     catch (const GeometryError &e)
       {
-        threw = std::string(e.what()).find("not a distance-map file") !=
-                std::string::npos;
+        threw = std::string(e.what()).find("not a distance-map file")
+                != std::string::npos;
       }
     CHECK(threw);
     std::filesystem::remove_all(dir);
@@ -206,7 +214,8 @@ main()
   {
     int refused = 0;
     for (const DistanceMap::Parameters p :
-         {DistanceMap::Parameters{0., 0.1, 1}, DistanceMap::Parameters{0.1, -1., 1}})
+         {DistanceMap::Parameters{0., 0.1, 1},
+          DistanceMap::Parameters{0.1, -1., 1}})
       try
         {
           DistanceMap::build(sphere, p);

@@ -24,12 +24,13 @@ main()
     const Vector3d h(0.5, 1.25, 2.);
     for (unsigned int n : {1u, 4u})
       {
-        const MassProperties mp = compute_mass_properties(mesh_generators::box(h, n));
-        const double         V  = 8. * h.prod();
-        Matrix3d             I  = Matrix3d::Zero();
-        I(0, 0) = V * (h[1] * h[1] + h[2] * h[2]) / 3.;
-        I(1, 1) = V * (h[0] * h[0] + h[2] * h[2]) / 3.;
-        I(2, 2) = V * (h[0] * h[0] + h[1] * h[1]) / 3.;
+        const MassProperties mp
+          = compute_mass_properties(mesh_generators::box(h, n));
+        const double V = 8. * h.prod();
+        Matrix3d     I = Matrix3d::Zero();
+        I(0, 0)        = V * (h[1] * h[1] + h[2] * h[2]) / 3.;
+        I(1, 1)        = V * (h[0] * h[0] + h[2] * h[2]) / 3.;
+        I(2, 2)        = V * (h[0] * h[0] + h[1] * h[1]) / 3.;
         CHECK(std::abs(mp.volume - V) < 1e-13 * V);
         CHECK(mp.centre.norm() < 1e-14);
         CHECK_MSG((mp.inertia - I).norm() < 1e-13 * I.norm(),
@@ -47,14 +48,16 @@ main()
     std::cout << "icosphere: refinements, |V - V_ball| / V, |I - I_ball| / I\n";
     for (unsigned int k = 1; k <= 6; ++k)
       {
-        const MassProperties mp =
-          compute_mass_properties(mesh_generators::icosphere(r, k));
+        const MassProperties mp
+          = compute_mass_properties(mesh_generators::icosphere(r, k));
         const double ev = std::abs(mp.volume - V) / V;
         const double ei = (mp.inertia - I * Matrix3d::Identity()).norm() / I;
         std::cout << "  " << k << "  " << ev << "  " << ei << "\n";
         // Isotropic: the icosahedral symmetry makes the tensor a multiple of
         // the identity; the centre is the origin.
-        const double iso = (mp.inertia - mp.inertia.trace() / 3. * Matrix3d::Identity()).norm();
+        const double iso
+          = (mp.inertia - mp.inertia.trace() / 3. * Matrix3d::Identity())
+              .norm();
         CHECK(iso < 1e-12 * I && mp.centre.norm() < 1e-12);
         if (k > 1)
           {
@@ -73,12 +76,15 @@ main()
   // tensor R I R^T (eq. 4.30). Use a non-symmetric body: a box with a
   // moved copy's tensor compared to the rotated one, and the elephant.
   {
-    const Pose pose(Eigen::Quaterniond(Eigen::AngleAxisd(1.1, Vector3d(0.3, -1., 0.5).normalized())),
+    const Pose                pose(Eigen::Quaterniond(
+                      Eigen::AngleAxisd(1.1,
+                                        Vector3d(0.3, -1., 0.5).normalized())),
                     Vector3d(10., -3., 7.));
-    std::vector<TriangleMesh> bodies = {mesh_generators::box(Vector3d(0.3, 0.7, 1.1), 2)};
-    const char *env = std::getenv("PARTICULATE_CGAL_DATA_DIR");
-    const std::string elephant =
-      std::string(env ? env : "cgal-data") + "/data/meshes/elephant.off";
+    std::vector<TriangleMesh> bodies
+      = {mesh_generators::box(Vector3d(0.3, 0.7, 1.1), 2)};
+    const char       *env = std::getenv("PARTICULATE_CGAL_DATA_DIR");
+    const std::string elephant
+      = std::string(env ? env : "cgal-data") + "/data/meshes/elephant.off";
     if (std::filesystem::exists(elephant))
       bodies.push_back(read_surface_mesh(elephant));
     for (const auto &m : bodies)
@@ -89,17 +95,22 @@ main()
         CHECK(std::abs(a.volume - b.volume) < 1e-10 * a.volume);
         CHECK((b.centre - c.centre).norm() < 1e-10 * (1. + c.centre.norm()));
         std::ostringstream msg;
-        msg << "moved tensor " << (b.inertia - c.inertia).norm() / c.inertia.norm();
-        CHECK_MSG((b.inertia - c.inertia).norm() < 1e-9 * c.inertia.norm(), msg.str());
+        msg << "moved tensor "
+            << (b.inertia - c.inertia).norm() / c.inertia.norm();
+        CHECK_MSG((b.inertia - c.inertia).norm() < 1e-9 * c.inertia.norm(),
+                  msg.str());
         // Principal frame: in it the tensor is diagonal with the moments.
         Vector3d       moments;
         const Pose     frame = a.principal_frame(&moments);
-        const Matrix3d D = frame.rotation().transpose() * a.inertia * frame.rotation();
-        CHECK((D - Matrix3d(moments.asDiagonal())).norm() < 1e-10 * moments.norm());
+        const Matrix3d D
+          = frame.rotation().transpose() * a.inertia * frame.rotation();
+        CHECK((D - Matrix3d(moments.asDiagonal())).norm()
+              < 1e-10 * moments.norm());
         CHECK(std::abs(frame.rotation().determinant() - 1.) < 1e-12);
         // Parallel axis: about the origin of the moved frame.
         const Matrix3d about = a.inertia_about(a.centre + Vector3d(1, 0, 0));
-        CHECK(std::abs(about(1, 1) - a.inertia(1, 1) - a.volume) < 1e-10 * about.norm());
+        CHECK(std::abs(about(1, 1) - a.inertia(1, 1) - a.volume)
+              < 1e-10 * about.norm());
       }
   }
 
@@ -114,7 +125,8 @@ main()
       }
     catch (const GeometryError &e)
       {
-        threw = std::string(e.what()).find("oriented outward") != std::string::npos;
+        threw
+          = std::string(e.what()).find("oriented outward") != std::string::npos;
       }
     CHECK(threw);
   }

@@ -20,7 +20,7 @@ using Eigen::Vector3d;
 int
 main(int argc, char **argv)
 {
-  const std::string dir = test::cgal_meshes_or_skip();
+  const std::string dir      = test::cgal_meshes_or_skip();
   const long        n_points = argc > 1 ? std::atol(argv[1]) : 100000;
 
   for (const char *name : {"bunny00.off", "elephant.off"})
@@ -29,12 +29,12 @@ main(int argc, char **argv)
       const TriangulatedSurface surface(mesh);
       const BoundingBox         box = mesh.bounding_box();
       // 96 cells along the longest side, margin 5 cells.
-      const double h = box.extent().maxCoeff() / 96.;
-      const auto   t0 = std::chrono::steady_clock::now();
+      const double      h   = box.extent().maxCoeff() / 96.;
+      const auto        t0  = std::chrono::steady_clock::now();
       const DistanceMap map = DistanceMap::build(surface, {h, 5 * h, 2});
-      const double build_s = std::chrono::duration<double>(
-                               std::chrono::steady_clock::now() - t0)
-                               .count();
+      const double      build_s
+        = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+            .count();
 
       // At the grid points themselves the pseudo-normal sign must match the
       // exact side test everywhere (not only far from the surface).
@@ -47,7 +47,8 @@ main(int argc, char **argv)
               if (map.value(i, j, k) == 0.)
                 continue;
               ++grid_checked;
-              grid_mismatch += ((map.value(i, j, k) < 0.) != surface.contains(p));
+              grid_mismatch
+                += ((map.value(i, j, k) < 0.) != surface.contains(p));
             }
 
       std::mt19937                           rng(2024);
@@ -57,8 +58,9 @@ main(int argc, char **argv)
       double max_err = 0., sum_err2 = 0.;
       for (long s = 0; s < n_points; ++s)
         {
-          const Vector3d p =
-            gb.lower + gb.extent().cwiseProduct(Vector3d(u(rng), u(rng), u(rng)));
+          const Vector3d p
+            = gb.lower
+              + gb.extent().cwiseProduct(Vector3d(u(rng), u(rng), u(rng)));
           const double exact_unsigned = surface.unsigned_distance(p);
           if (exact_unsigned <= h)
             continue;
@@ -70,13 +72,12 @@ main(int argc, char **argv)
             {
               ++mismatched;
               if (mismatched <= 5)
-                std::cerr << "  mismatch at " << p.transpose() << ": map "
-                          << d << ", exact inside " << exact_inside
+                std::cerr << "  mismatch at " << p.transpose() << ": map " << d
+                          << ", exact inside " << exact_inside
                           << ", exact distance " << exact_unsigned << "\n";
             }
-          const double err =
-            std::abs(std::abs(d) - exact_unsigned);
-          max_err = std::max(max_err, err);
+          const double err = std::abs(std::abs(d) - exact_unsigned);
+          max_err          = std::max(max_err, err);
           sum_err2 += err * err;
         }
       std::cout << name << ": " << mesh.n_triangles() << " triangles, grid "
@@ -85,8 +86,8 @@ main(int argc, char **argv)
                 << build_s << " s\n  " << grid_checked
                 << " grid points vs side-of-mesh: " << grid_mismatch
                 << " mismatches\n  " << compared << " of " << n_points
-                << " random points farther than h from the surface ("
-                << inside << " inside): " << mismatched
+                << " random points farther than h from the surface (" << inside
+                << " inside): " << mismatched
                 << " sign mismatches; distance error rms "
                 << std::sqrt(sum_err2 / compared) << " = "
                 << std::sqrt(sum_err2 / compared) / h << " h, max " << max_err
@@ -94,8 +95,9 @@ main(int argc, char **argv)
       CHECK_MSG(grid_mismatch == 0,
                 std::string(name) + ": grid-point signs agree with CGAL");
       CHECK_MSG(mismatched == 0,
-                std::string(name) + ": map sign agrees with CGAL side-of-mesh "
-                                    "farther than one cell from the surface");
+                std::string(name)
+                  + ": map sign agrees with CGAL side-of-mesh "
+                    "farther than one cell from the surface");
       CHECK_MSG(compared > n_points / 2 && inside > 0,
                 std::string(name) + ": enough points compared");
       // Trilinear interpolation of a distance function: the error is bounded

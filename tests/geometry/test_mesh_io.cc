@@ -9,50 +9,50 @@
 #include <filesystem>
 #include <fstream>
 
-#include <unistd.h>
-
 #include "check.h"
+#include <unistd.h>
 
 using namespace particulate::geometry;
 namespace fs = std::filesystem;
 
 namespace {
-// Read @p path and expect a GeometryError containing @p expected.
-void
-expect_error(const std::string &path, const std::string &expected)
-{
-  try
-    {
-      read_surface_mesh(path);
-      CHECK_MSG(false, "reading " + path + " should fail with '" + expected +
-                         "' but succeeded");
-    }
-  catch (const GeometryError &e)
-    {
-      const std::string msg = e.what();
-      std::cout << "  expected error for " << fs::path(path).filename()
-                << ":\n    " << msg << std::endl;
-      CHECK_MSG(msg.find(expected) != std::string::npos,
-                "error for " + path + " should mention '" + expected +
-                  "', got: " + msg);
-      CHECK_MSG(msg.find(path) != std::string::npos,
-                "error should name the file " + path);
-    }
-}
+  // Read @p path and expect a GeometryError containing @p expected.
+  void
+  expect_error(const std::string &path, const std::string &expected)
+  {
+    try
+      {
+        read_surface_mesh(path);
+        CHECK_MSG(false,
+                  "reading " + path + " should fail with '" + expected
+                    + "' but succeeded");
+      }
+    catch (const GeometryError &e)
+      {
+        const std::string msg = e.what();
+        std::cout << "  expected error for " << fs::path(path).filename()
+                  << ":\n    " << msg << std::endl;
+        CHECK_MSG(msg.find(expected) != std::string::npos,
+                  "error for " + path + " should mention '" + expected
+                    + "', got: " + msg);
+        CHECK_MSG(msg.find(path) != std::string::npos,
+                  "error should name the file " + path);
+      }
+  }
 
-void
-write_text(const std::string &path, const std::string &text)
-{
-  std::ofstream(path, std::ios::binary) << text;
-}
+  void
+  write_text(const std::string &path, const std::string &text)
+  {
+    std::ofstream(path, std::ios::binary) << text;
+  }
 } // namespace
 
 int
 main()
 {
   const std::string dir = test::cgal_meshes_or_skip();
-  const fs::path    tmp = fs::temp_directory_path() /
-                       ("particulate_mesh_io_" + std::to_string(::getpid()));
+  const fs::path    tmp = fs::temp_directory_path()
+                       / ("particulate_mesh_io_" + std::to_string(::getpid()));
   fs::create_directories(tmp);
 
   // Real meshes: closed and bounding a solid, positive volume.
@@ -106,8 +106,8 @@ main()
       }
     catch (const GeometryError &e)
       {
-        threw = std::string(e.what()).find("inconsistently oriented") !=
-                std::string::npos;
+        threw = std::string(e.what()).find("inconsistently oriented")
+                != std::string::npos;
       }
     CHECK_MSG(threw, "with orient = false flipped faces are an error");
   }
@@ -148,18 +148,21 @@ main()
     for (const auto &t : b.triangles)
       a.triangles.push_back({t[0] + off, t[1] + off, t[2] + off});
     write_surface_mesh((tmp / "overlap.off").string(), a);
-    expect_error((tmp / "overlap.off").string(), "self-intersecting triangle pairs");
+    expect_error((tmp / "overlap.off").string(),
+                 "self-intersecting triangle pairs");
 
     write_text((tmp / "empty.off").string(), "");
     expect_error((tmp / "empty.off").string(), "could not be parsed");
-    write_text((tmp / "nofaces.off").string(), "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+    write_text((tmp / "nofaces.off").string(),
+               "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
     expect_error((tmp / "nofaces.off").string(), "empty mesh");
 
     // Truncated: the first third of the bunny.
     {
       std::ifstream in(dir + "/bunny00.off", std::ios::binary);
       std::string   all((std::istreambuf_iterator<char>(in)), {});
-      write_text((tmp / "truncated.off").string(), all.substr(0, all.size() / 3));
+      write_text((tmp / "truncated.off").string(),
+                 all.substr(0, all.size() / 3));
       expect_error((tmp / "truncated.off").string(), "could not be parsed");
     }
     write_text((tmp / "garbage.stl").string(),

@@ -24,18 +24,19 @@ using namespace particulate::geometry;
 using Eigen::Vector3d;
 
 namespace {
-// Lattice points (i, j, k) / n, 0 <= i, j, k <= n, inside the closed ball of
-// radius m / n around (c, c, c) / n: counted in exact integer arithmetic.
-long
-lattice_points_in_ball(const int n, const int c, const int m)
-{
-  long count = 0;
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        count += (i - c) * (i - c) + (j - c) * (j - c) + (k - c) * (k - c) <= m * m;
-  return count;
-}
+  // Lattice points (i, j, k) / n, 0 <= i, j, k <= n, inside the closed ball of
+  // radius m / n around (c, c, c) / n: counted in exact integer arithmetic.
+  long
+  lattice_points_in_ball(const int n, const int c, const int m)
+  {
+    long count = 0;
+    for (int k = 0; k <= n; ++k)
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+          count += (i - c) * (i - c) + (j - c) * (j - c) + (k - c) * (k - c)
+                   <= m * m;
+    return count;
+  }
 } // namespace
 
 int
@@ -46,8 +47,8 @@ main()
 
   // A ball of radius 1/4 at the centre: lattice points lie exactly on its
   // surface (e.g. (3/4, 1/2, 1/2)) and must count as inside.
-  Sphere                   ball(0.25);
-  const Pose               centre(Eigen::Matrix3d::Identity(), Vector3d(0.5, 0.5, 0.5));
+  Sphere     ball(0.25);
+  const Pose centre(Eigen::Matrix3d::Identity(), Vector3d(0.5, 0.5, 0.5));
   std::vector<PlacedShape> one = {{&ball, centre}};
 
   // Vertices: 17^3, spacing 1/16, ball radius 4 spacings.
@@ -55,7 +56,7 @@ main()
     const MeshPointClassifier c(tria);
     CHECK(c.points().size() == 17u * 17u * 17u);
     ContainmentStatistics stats;
-    const auto            in = c.classify(one, nullptr, &stats);
+    const auto            in   = c.classify(one, nullptr, &stats);
     long                  n_in = 0;
     for (const int b : in)
       n_in += b == 0;
@@ -70,9 +71,11 @@ main()
     for (std::size_t i = 0; i < c.points().size(); ++i)
       {
         const auto &v = tria.get_vertices()[c.point_ids()[i]];
-        ids_ok        = ids_ok && v.distance(dealii::Point<3>(c.points()[i][0],
-                                                             c.points()[i][1],
-                                                             c.points()[i][2])) == 0.;
+        ids_ok        = ids_ok
+                 && v.distance(dealii::Point<3>(c.points()[i][0],
+                                                c.points()[i][1],
+                                                c.points()[i][2]))
+                      == 0.;
       }
     CHECK(ids_ok);
   }
@@ -97,9 +100,9 @@ main()
     std::vector<std::unique_ptr<Shape>> shapes;
     shapes.push_back(std::make_unique<Sphere>(0.11));
     shapes.push_back(std::make_unique<Box>(Vector3d(0.1, 0.05, 0.15)));
-    const char *env = std::getenv("PARTICULATE_CGAL_DATA_DIR");
-    const std::string elephant =
-      std::string(env ? env : "cgal-data") + "/data/meshes/elephant.off";
+    const char       *env = std::getenv("PARTICULATE_CGAL_DATA_DIR");
+    const std::string elephant
+      = std::string(env ? env : "cgal-data") + "/data/meshes/elephant.off";
     if (std::filesystem::exists(elephant))
       shapes.push_back(std::make_unique<TriangulatedSurface>(
         read_surface_mesh(elephant).scaled(0.3)));
@@ -107,14 +110,15 @@ main()
     for (int b = 0; b < 30; ++b)
       {
         const double t = 0.37 * b;
-        bodies.push_back({shapes[b % shapes.size()].get(),
-                          Pose(Eigen::Quaterniond(std::cos(t), std::sin(t), 0.3, -0.2),
-                               Vector3d(0.5 + 0.4 * std::sin(1.3 * t),
-                                        0.5 + 0.4 * std::cos(0.7 * t),
-                                        0.5 + 0.4 * std::sin(2.1 * t)))});
+        bodies.push_back(
+          {shapes[b % shapes.size()].get(),
+           Pose(Eigen::Quaterniond(std::cos(t), std::sin(t), 0.3, -0.2),
+                Vector3d(0.5 + 0.4 * std::sin(1.3 * t),
+                         0.5 + 0.4 * std::cos(0.7 * t),
+                         0.5 + 0.4 * std::sin(2.1 * t)))});
       }
     ContainmentStatistics stats;
-    const auto fast = c.classify(bodies, nullptr, &stats);
+    const auto            fast = c.classify(bodies, nullptr, &stats);
     const auto slow = classify_points_brute_force(c.points(), bodies);
     long       diff = 0, n_inside = 0;
     for (std::size_t i = 0; i < fast.size(); ++i)
@@ -124,8 +128,8 @@ main()
       }
     std::cout << bodies.size() << " bodies: " << n_inside << " nodes inside, "
               << stats.n_tests << " tests (brute force "
-              << fast.size() * bodies.size() << "), " << diff
-              << " differences" << std::endl;
+              << fast.size() * bodies.size() << "), " << diff << " differences"
+              << std::endl;
     CHECK(diff == 0 && n_inside > 0);
   }
   return test::finish("geometry_mesh_point_classifier");

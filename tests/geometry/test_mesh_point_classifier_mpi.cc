@@ -30,33 +30,34 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm     comm  = MPI_COMM_WORLD;
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
   const unsigned int rank  = dealii::Utilities::MPI::this_mpi_process(comm);
   const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
 
   dealii::Triangulation<3> serial;
   dealii::GridGenerator::subdivided_hyper_cube(serial, 12, 0., 1.);
   dealii::GridTools::partition_triangulation(ranks, serial);
-  const auto description =
-    dealii::TriangulationDescription::Utilities::create_description_from_triangulation(
-      serial, comm);
+  const auto description = dealii::TriangulationDescription::Utilities::
+    create_description_from_triangulation(serial, comm);
   dealii::parallel::fullydistributed::Triangulation<3> tria(comm);
   tria.create_triangulation(description);
 
-  Sphere    ball(0.3);
-  Box       box(Vector3d(0.2, 0.1, 0.15));
-  Ellipsoid egg(Vector3d(0.15, 0.1, 0.08));
-  const std::vector<PlacedShape> bodies = {
-    {&ball, Pose(Eigen::Matrix3d::Identity(), Vector3d(0.4, 0.5, 0.5))},
-    {&box,
-     Pose(Eigen::Quaterniond(Eigen::AngleAxisd(0.6, Vector3d(1, 1, 0).normalized())),
-          Vector3d(0.75, 0.3, 0.6))},
-    {&egg,
-     Pose(Eigen::Quaterniond(Eigen::AngleAxisd(1.2, Vector3d(0, 1, 1).normalized())),
-          Vector3d(0.2, 0.8, 0.3))}};
+  Sphere                         ball(0.3);
+  Box                            box(Vector3d(0.2, 0.1, 0.15));
+  Ellipsoid                      egg(Vector3d(0.15, 0.1, 0.08));
+  const std::vector<PlacedShape> bodies
+    = {{&ball, Pose(Eigen::Matrix3d::Identity(), Vector3d(0.4, 0.5, 0.5))},
+       {&box,
+        Pose(Eigen::Quaterniond(
+               Eigen::AngleAxisd(0.6, Vector3d(1, 1, 0).normalized())),
+             Vector3d(0.75, 0.3, 0.6))},
+       {&egg,
+        Pose(Eigen::Quaterniond(
+               Eigen::AngleAxisd(1.2, Vector3d(0, 1, 1).normalized())),
+             Vector3d(0.2, 0.8, 0.3))}};
 
-  dealii::FESystem<3>   fe(dealii::FE_Q<3>(2), 3);
-  dealii::MappingQ1<3>  mapping;
+  dealii::FESystem<3>  fe(dealii::FE_Q<3>(2), 3);
+  dealii::MappingQ1<3> mapping;
 
   // Distributed: this rank's owned nodes.
   dealii::DoFHandler<3> dh(tria);
@@ -79,10 +80,12 @@ main(int argc, char **argv)
 
   const long total_diff   = dealii::Utilities::MPI::sum(diff, comm);
   const long total_inside = dealii::Utilities::MPI::sum(inside, comm);
-  const long total_points =
-    dealii::Utilities::MPI::sum(static_cast<long>(local.points().size()), comm);
-  const long min_points =
-    dealii::Utilities::MPI::min(static_cast<long>(local.points().size()), comm);
+  const long total_points
+    = dealii::Utilities::MPI::sum(static_cast<long>(local.points().size()),
+                                  comm);
+  const long min_points
+    = dealii::Utilities::MPI::min(static_cast<long>(local.points().size()),
+                                  comm);
 
   // Serial reference on the same mesh.
   dealii::DoFHandler<3> sdh(serial);
@@ -93,14 +96,15 @@ main(int argc, char **argv)
     serial_inside += b >= 0;
 
   if (rank == 0)
-    std::cout << ranks << " ranks: " << total_points << " owned Q2 nodes (serial "
-              << all.points().size() << "), inside " << total_inside
-              << " (serial " << serial_inside << "), hash grid vs brute force "
+    std::cout << ranks << " ranks: " << total_points
+              << " owned Q2 nodes (serial " << all.points().size()
+              << "), inside " << total_inside << " (serial " << serial_inside
+              << "), hash grid vs brute force "
               << "differences " << total_diff << std::endl;
   CHECK(total_diff == 0);
   CHECK(total_points == static_cast<long>(all.points().size()));
   CHECK(total_inside == serial_inside && serial_inside > 0);
   CHECK_MSG(ranks == 1 || min_points > 0, "every rank owns nodes");
-  return rank == 0 ? test::finish("geometry_mesh_point_classifier_mpi")
-                   : (test::failures > 0 ? 1 : 0);
+  return rank == 0 ? test::finish("geometry_mesh_point_classifier_mpi") :
+                     (test::failures > 0 ? 1 : 0);
 }

@@ -39,7 +39,8 @@ main()
   shapes.push_back(std::make_unique<TriangulatedSurface>(
     mesh_generators::torus(0.06, 0.025, 24, 12)));
   auto map = std::make_shared<const DistanceMap>(
-    DistanceMap::build(Ellipsoid(Vector3d(0.07, 0.04, 0.05)), {0.005, 0.01, 1}));
+    DistanceMap::build(Ellipsoid(Vector3d(0.07, 0.04, 0.05)),
+                       {0.005, 0.01, 1}));
   shapes.push_back(std::make_unique<DistanceMapShape>(map));
 
   // 100 bodies at random poses; the first also a half-space (floor).
@@ -48,7 +49,9 @@ main()
   bodies.push_back({&floor, Pose()});
   for (int b = 0; b < 99; ++b)
     {
-      const Eigen::Quaterniond q(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5,
+      const Eigen::Quaterniond q(u(rng) - 0.5,
+                                 u(rng) - 0.5,
+                                 u(rng) - 0.5,
                                  u(rng) - 0.5);
       bodies.push_back({shapes[b % shapes.size()].get(),
                         Pose(q, Vector3d(u(rng), u(rng), 0.1 + 0.9 * u(rng)))});
@@ -69,18 +72,18 @@ main()
         const PointHashGrid   grid(sets[s], cell);
         ContainmentStatistics stats;
         std::vector<double>   dist;
-        const auto            fast  = classify_points(grid, bodies, &dist, &stats);
-        const auto            slow  = classify_points_brute_force(sets[s], bodies);
-        std::size_t           diff  = 0, n_in = 0;
+        const auto  fast = classify_points(grid, bodies, &dist, &stats);
+        const auto  slow = classify_points_brute_force(sets[s], bodies);
+        std::size_t diff = 0, n_in = 0;
         for (std::size_t i = 0; i < fast.size(); ++i)
           {
             diff += fast[i] != slow[i];
             n_in += fast[i] >= 0;
           }
         std::cout << "set " << s << ", cell " << grid.cell_size() << ": "
-                  << grid.size() << " points, " << grid.n_cells()
-                  << " cells, " << n_in << " inside, " << stats.n_tests
-                  << " tests for " << bodies.size() << " bodies (brute force "
+                  << grid.size() << " points, " << grid.n_cells() << " cells, "
+                  << n_in << " inside, " << stats.n_tests << " tests for "
+                  << bodies.size() << " bodies (brute force "
                   << grid.size() * bodies.size() << "), differences " << diff
                   << std::endl;
         CHECK_MSG(diff == 0, "hash grid = brute force");
@@ -100,9 +103,10 @@ main()
     std::vector<PlacedShape> finite(bodies.begin() + 1, bodies.end());
     const PointHashGrid      grid(sets[0]);
     ContainmentStatistics    stats;
-    const auto               fast = classify_points(grid, finite, nullptr, &stats);
+    const auto fast = classify_points(grid, finite, nullptr, &stats);
     CHECK(fast == classify_points_brute_force(sets[0], finite));
-    const double fraction = double(stats.n_tests) / (grid.size() * finite.size());
+    const double fraction
+      = double(stats.n_tests) / (grid.size() * finite.size());
     std::cout << "99 finite bodies: " << stats.n_points_touched
               << " points touched, tests / brute-force tests = " << fraction
               << std::endl;
@@ -115,8 +119,9 @@ main()
     CHECK(classify_points(empty, bodies).empty());
     Sphere              s(0.25);
     const PointHashGrid one({Vector3d(0.5, 0.25, 0.25)});
-    const auto          r =
-      classify_points(one, {{&s, Pose(Eigen::Matrix3d::Identity(), Vector3d(0.25, 0.25, 0.25))}});
+    const auto          r = classify_points(
+      one,
+      {{&s, Pose(Eigen::Matrix3d::Identity(), Vector3d(0.25, 0.25, 0.25))}});
     CHECK(r.size() == 1 && r[0] == 0);
     CHECK(classify_points(one, {})[0] == -1);
   }

@@ -20,28 +20,28 @@ using namespace particulate::geometry;
 using Eigen::Vector3d;
 
 namespace {
-// The signed-distance gradient must be the returned normal: check by
-// central differences at points away from the medial axis.
-void
-check_gradient(const Shape &s, const Vector3d &p, const char *name)
-{
-  Vector3d     n;
-  const double d = s.signed_distance(p, &n);
-  (void)d;
-  const double h = 1e-6;
-  Vector3d     g;
-  for (int k = 0; k < 3; ++k)
-    {
-      Vector3d e = Vector3d::Zero();
-      e[k]       = h;
-      g[k] = (s.signed_distance(p + e) - s.signed_distance(p - e)) / (2 * h);
-    }
-  std::ostringstream msg;
-  msg << name << ": normal " << n.transpose() << " vs gradient "
-      << g.transpose() << " at " << p.transpose();
-  CHECK_MSG((n - g).norm() < 1e-5 && std::abs(n.norm() - 1.) < 1e-12,
-            msg.str());
-}
+  // The signed-distance gradient must be the returned normal: check by
+  // central differences at points away from the medial axis.
+  void
+  check_gradient(const Shape &s, const Vector3d &p, const char *name)
+  {
+    Vector3d     n;
+    const double d = s.signed_distance(p, &n);
+    (void)d;
+    const double h = 1e-6;
+    Vector3d     g;
+    for (int k = 0; k < 3; ++k)
+      {
+        Vector3d e = Vector3d::Zero();
+        e[k]       = h;
+        g[k] = (s.signed_distance(p + e) - s.signed_distance(p - e)) / (2 * h);
+      }
+    std::ostringstream msg;
+    msg << name << ": normal " << n.transpose() << " vs gradient "
+        << g.transpose() << " at " << p.transpose();
+    CHECK_MSG((n - g).norm() < 1e-5 && std::abs(n.norm() - 1.) < 1e-12,
+              msg.str());
+  }
 } // namespace
 
 int
@@ -58,10 +58,10 @@ main()
   {
     Box b(Vector3d(1, 2, 3));
     CHECK(std::abs(b.signed_distance(Vector3d(2, 0, 0)) - 1.) < 1e-15);
-    CHECK(std::abs(b.signed_distance(Vector3d(2, 3, 0)) - std::sqrt(2.)) <
-          1e-15);
-    CHECK(std::abs(b.signed_distance(Vector3d(2, 3, 4)) - std::sqrt(3.)) <
-          1e-15);
+    CHECK(std::abs(b.signed_distance(Vector3d(2, 3, 0)) - std::sqrt(2.))
+          < 1e-15);
+    CHECK(std::abs(b.signed_distance(Vector3d(2, 3, 4)) - std::sqrt(3.))
+          < 1e-15);
     CHECK(std::abs(b.signed_distance(Vector3d(0.5, 0, 0)) + 0.5) < 1e-15);
     CHECK(std::abs(b.signed_distance(Vector3d(0, 0, 0)) + 1.) < 1e-15);
     check_gradient(b, Vector3d(1.5, 2.5, 0.3), "box edge region");
@@ -89,8 +89,8 @@ main()
     Torus t(2., 0.5);
     CHECK(std::abs(t.signed_distance(Vector3d(0, 2, 0)) + 0.5) < 1e-15);
     CHECK(std::abs(t.signed_distance(Vector3d(0, 0, 0)) - 1.5) < 1e-15);
-    CHECK(std::abs(t.signed_distance(Vector3d(3, 0, 1)) -
-                   (std::sqrt(2.) - 0.5)) < 1e-15);
+    CHECK(std::abs(t.signed_distance(Vector3d(3, 0, 1)) - (std::sqrt(2.) - 0.5))
+          < 1e-15);
     check_gradient(t, Vector3d(1.1, 1.9, 0.4), "torus");
   }
   // Ellipsoid: with equal axes it is a sphere; on the axes the distance is
@@ -98,16 +98,17 @@ main()
   // p - x is parallel to the normal, and brute-force sampling of the
   // surface never finds a closer point.
   {
-    Ellipsoid    round(Vector3d(1.5, 1.5, 1.5));
-    Sphere       s(1.5);
-    std::mt19937 rng(3);
+    Ellipsoid                              round(Vector3d(1.5, 1.5, 1.5));
+    Sphere                                 s(1.5);
+    std::mt19937                           rng(3);
     std::uniform_real_distribution<double> u(-3., 3.);
-    double max_diff = 0.;
+    double                                 max_diff = 0.;
     for (int i = 0; i < 2000; ++i)
       {
         const Vector3d p(u(rng), u(rng), u(rng));
-        max_diff = std::max(max_diff, std::abs(round.signed_distance(p) -
-                                               s.signed_distance(p)));
+        max_diff
+          = std::max(max_diff,
+                     std::abs(round.signed_distance(p) - s.signed_distance(p)));
       }
     CHECK_MSG(max_diff < 1e-12, "ellipsoid with equal axes = sphere");
 
@@ -138,7 +139,7 @@ main()
         const Vector3d x = p - sd * nrm;
         CHECK_MSG(std::abs(x.cwiseQuotient(e).squaredNorm() - 1.) < 1e-10,
                   "ellipsoid: p - d n lies on the surface");
-        double         best = 1e300;
+        double best = 1e300;
         for (const auto &q : surface)
           best = std::min(best, (p - q).norm());
         // The sampled minimum is an upper bound of the exact distance, and
@@ -150,24 +151,26 @@ main()
     CHECK_MSG(worst < 0.012, "ellipsoid distance close to the sampled minimum");
     check_gradient(el, Vector3d(2.5, 1.5, 0.8), "ellipsoid outside");
     check_gradient(el, Vector3d(0.5, 0.3, 0.2), "ellipsoid inside");
-    CHECK(el.contains(Vector3d(2.9, 0, 0)) && !el.contains(Vector3d(0, 0, 1.01)));
+    CHECK(el.contains(Vector3d(2.9, 0, 0))
+          && !el.contains(Vector3d(0, 0, 1.01)));
   }
   // Triangulated box: the polyhedron is exactly the box, so the signed
   // distance must equal Box's to rounding, inside and outside, and the
   // exact side test must agree with the pseudo-normal sign.
   {
-    const Vector3d      h(0.5, 1., 1.5);
-    TriangulatedSurface tb(mesh_generators::box(h, 3));
-    Box                 b(h);
-    std::mt19937        rng(5);
+    const Vector3d                         h(0.5, 1., 1.5);
+    TriangulatedSurface                    tb(mesh_generators::box(h, 3));
+    Box                                    b(h);
+    std::mt19937                           rng(5);
     std::uniform_real_distribution<double> u(-2.5, 2.5);
-    double max_diff = 0.;
-    int    disagree = 0;
+    double                                 max_diff = 0.;
+    int                                    disagree = 0;
     for (int i = 0; i < 20000; ++i)
       {
         const Vector3d p(u(rng), u(rng), u(rng));
-        max_diff = std::max(max_diff, std::abs(tb.signed_distance(p) -
-                                               b.signed_distance(p)));
+        max_diff
+          = std::max(max_diff,
+                     std::abs(tb.signed_distance(p) - b.signed_distance(p)));
         disagree += (tb.contains(p) != b.contains(p));
       }
     std::ostringstream msg;
@@ -189,8 +192,8 @@ main()
       }
     catch (const GeometryError &e)
       {
-        threw = std::string(e.what()).find("open: 3 border edges") !=
-                std::string::npos;
+        threw = std::string(e.what()).find("open: 3 border edges")
+                != std::string::npos;
       }
     CHECK_MSG(threw, "open mesh refused with 'open: 3 border edges'");
   }

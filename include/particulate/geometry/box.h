@@ -5,36 +5,36 @@
 
 namespace particulate::geometry {
 
-/**
- * The box [-h, h] (half extents h) centred at the body-frame origin, axes
- * along the body axes; exact signed distance, also at edges and corners.
- */
-class Box : public Shape
-{
-public:
-  /** @param half_extents h, all components > 0 [m] */
-  explicit Box(const Eigen::Vector3d &half_extents);
-
-  /** Half extents [m]. */
-  const Eigen::Vector3d &
-  half_extents() const
+  /**
+   * The box [-h, h] (half extents h) centred at the body-frame origin, axes
+   * along the body axes; exact signed distance, also at edges and corners.
+   */
+  class Box : public Shape
   {
-    return h;
-  }
+  public:
+    /** @param half_extents h, all components > 0 [m] */
+    explicit Box(const Eigen::Vector3d &half_extents);
 
-  double
-  signed_distance(const Eigen::Vector3d &p,
-                  Eigen::Vector3d       *normal = nullptr) const override;
+    /** Half extents [m]. */
+    const Eigen::Vector3d &
+    half_extents() const
+    {
+      return h;
+    }
 
-  BoundingBox
-  bounding_box() const override;
+    double
+    signed_distance(const Eigen::Vector3d &p,
+                    Eigen::Vector3d       *normal = nullptr) const override;
 
-  double
-  volume() const override;
+    BoundingBox
+    bounding_box() const override;
 
-private:
-  Eigen::Vector3d h;
-};
+    double
+    volume() const override;
+
+  private:
+    Eigen::Vector3d h;
+  };
 
 } // namespace particulate::geometry
 
