@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace particulate::geometry {
 
@@ -41,25 +42,29 @@ namespace particulate::geometry {
                           "extent of the points (more than 2^21 cells along a "
                           "side); use a larger cell size.");
 
-    std::vector<std::uint64_t> keys(pts.size());
+    // Sort (cell key, point id) pairs: contiguous, no indirection, and the
+    // id breaks ties so the order is deterministic.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i)
-      keys[i]
-        = key(coord(pts[i][0], 0), coord(pts[i][1], 1), coord(pts[i][2], 2));
+      keyed[i]
+        = {key(coord(pts[i][0], 0), coord(pts[i][1], 1), coord(pts[i][2], 2)),
+           static_cast<std::uint32_t>(i)};
+    std::sort(keyed.begin(), keyed.end());
     order.resize(pts.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(),
-                     order.end(),
-                     [&](std::uint32_t a, std::uint32_t b) {
-                       return keys[a] < keys[b];
-                     });
-    cells.reserve(pts.size() / 2 + 1);
-    for (std::uint32_t q = 0; q < order.size();)
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      order[i] = keyed[i].second;
+    std::size_t n_cells = 0;
+    for (std::size_t q = 0; q < keyed.size(); ++q)
+      n_cells += (q == 0 || keyed[q].first != keyed[q - 1].first);
+    cells.reserve(n_cells);
+    cell_keys.reserve(n_cells);
+    for (std::uint32_t q = 0; q < keyed.size();)
       {
         std::uint32_t e = q;
-        while (e < order.size() && keys[order[e]] == keys[order[q]])
+        while (e < keyed.size() && keyed[e].first == keyed[q].first)
           ++e;
-        cells.emplace(keys[order[q]], Range{q, e});
-        cell_keys.push_back(keys[order[q]]);
+        cells.emplace(keyed[q].first, Range{q, e});
+        cell_keys.push_back(keyed[q].first);
         q = e;
       }
   }

@@ -60,7 +60,7 @@ namespace {
   convergence(const Shape &shape, const double band, const char *name)
   {
     const auto          pts = sample(shape, band, 20000);
-    std::vector<double> hs  = {0.1, 0.05, 0.025}, rms, max;
+    std::vector<double> hs  = {0.1, 0.05, 0.025}, rms, max, angles;
     std::cout << name << ": h, rms error, max error, normal max angle [rad]\n";
     for (const double h : hs)
       {
@@ -78,6 +78,7 @@ namespace {
           }
         rms.push_back(std::sqrt(s2 / pts.size()));
         max.push_back(m);
+        angles.push_back(angle);
         std::cout << "  " << h << "  " << rms.back() << "  " << m << "  "
                   << angle << "\n";
       }
@@ -89,6 +90,11 @@ namespace {
         << " (max) should lie in [1.8, 2.2]";
     CHECK_MSG(r_rms >= 1.8 && r_rms <= 2.2 && r_max >= 1.8 && r_max <= 2.2,
               msg.str());
+    // The interpolated normal converges too (second order as well).
+    const double r_angle = rate(hs, angles);
+    std::cout << "  rate (normal angle) " << r_angle << std::endl;
+    CHECK_MSG(r_angle >= 1.8 && angles.back() < 2e-3,
+              std::string(name) + ": normal angle error falls as O(h^2)");
   }
 } // namespace
 
