@@ -1,0 +1,42 @@
+#ifndef PARTICULATE_GEOMETRY_ELLIPSOID_H
+#define PARTICULATE_GEOMETRY_ELLIPSOID_H
+
+#include <particulate/geometry/shape.h>
+
+namespace particulate::geometry {
+
+  /**
+   * The ellipsoid (x/a)^2 + (y/b)^2 + (z/c)^2 <= 1 centred at the origin with
+   * semi-axes along the body axes. The distance is the exact Euclidean one, by
+   * D. Eberly's method ("Distance from a point to an ellipse, an ellipsoid, or
+   * a hyperellipsoid", Geometric Tools, 2013): the closest point solves a
+   * monotone scalar equation whose root bisection brackets to machine
+   * precision, inside and outside.
+   */
+  class Ellipsoid : public Shape
+  {
+  public:
+    /** @param semi_axes (a, b, c), all > 0 [m] */
+    explicit Ellipsoid(const Eigen::Vector3d &semi_axes);
+
+    double
+    signed_distance(const Eigen::Vector3d &p,
+                    Eigen::Vector3d       *normal = nullptr) const override;
+
+    /** Closed-form test, cheaper than the distance. */
+    bool
+    contains(const Eigen::Vector3d &p) const override;
+
+    BoundingBox
+    bounding_box() const override;
+
+    double
+    volume() const override;
+
+  private:
+    Eigen::Vector3d e;
+  };
+
+} // namespace particulate::geometry
+
+#endif

@@ -1,0 +1,38 @@
+#ifndef PARTICULATE_GEOMETRY_HALF_SPACE_H
+#define PARTICULATE_GEOMETRY_HALF_SPACE_H
+
+#include <particulate/geometry/shape.h>
+
+namespace particulate::geometry {
+
+  /**
+   * The half-space {x : n.x <= c} (a wall or floor; the solid lies on the side
+   * opposite to the unit normal n); exact signed distance n.x - c.
+   */
+  class HalfSpace : public Shape
+  {
+  public:
+    /**
+     * @param normal outward normal n (normalised here; must not be zero)
+     * @param offset c [m]: the boundary plane is n.x = c
+     */
+    HalfSpace(const Eigen::Vector3d &normal, const double offset);
+
+    double
+    signed_distance(const Eigen::Vector3d &p,
+                    Eigen::Vector3d       *normal = nullptr) const override;
+
+    BoundingBox
+    bounding_box() const override;
+
+    double
+    volume() const override;
+
+  private:
+    Eigen::Vector3d n;
+    double          c;
+  };
+
+} // namespace particulate::geometry
+
+#endif

@@ -1,0 +1,21 @@
+#ifndef PARTICULATE_GEOMETRY_INNER_SPHERE_DATA_H
+#define PARTICULATE_GEOMETRY_INNER_SPHERE_DATA_H
+
+#include <vector>
+
+namespace particulate::geometry {
+
+  /**
+   * Inner spheres as raw arrays (structure of arrays), the layout the CUDA
+   * containment kernels (cuda/) read: sphere s has centre (cx[s], cy[s],
+   * cz[s]) in the body frame and radius r[s] [m]. A point is inside the body
+   * if it is inside any sphere.
+   */
+  struct InnerSphereData
+  {
+    std::vector<float> cx, cy, cz, r;
+  };
+
+} // namespace particulate::geometry
+
+#endif

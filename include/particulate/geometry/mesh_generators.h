@@ -1,0 +1,44 @@
+#ifndef PARTICULATE_GEOMETRY_MESH_GENERATORS_H
+#define PARTICULATE_GEOMETRY_MESH_GENERATORS_H
+
+#include <particulate/geometry/triangle_mesh.h>
+
+namespace particulate::geometry {
+
+  /**
+   * Closed, outward-oriented triangulations of simple solids, generated in
+   * code for tests with exact answers (volumes, inertia, distances).
+   */
+  namespace mesh_generators {
+
+    /**
+     * A sphere of radius @p radius [m] centred at the origin: an icosahedron
+     * whose triangles are split into four @p refinements times, with the new
+     * vertices projected onto the sphere (20 * 4^refinements triangles).
+     */
+    TriangleMesh
+    icosphere(const double radius, const unsigned int refinements);
+
+    /**
+     * The box [-h, h] with half extents @p half_extents [m], each face split
+     * into n x n squares of two triangles (n = @p subdivisions >= 1).
+     */
+    TriangleMesh
+    box(const Eigen::Vector3d &half_extents,
+        const unsigned int     subdivisions = 1);
+
+    /**
+     * A torus around the z axis: distance @p major_radius from the axis to the
+     * tube centre, tube radius @p minor_radius [m], with @p n_major x
+     * @p n_minor quadrilaterals split into triangles.
+     */
+    TriangleMesh
+    torus(const double       major_radius,
+          const double       minor_radius,
+          const unsigned int n_major,
+          const unsigned int n_minor);
+
+  } // namespace mesh_generators
+} // namespace particulate::geometry
+
+#endif

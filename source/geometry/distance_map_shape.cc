@@ -1,0 +1,46 @@
+#include <particulate/geometry/distance_map_shape.h>
+#include <particulate/geometry/geometry_error.h>
+
+namespace particulate::geometry {
+
+  DistanceMapShape::DistanceMapShape(std::shared_ptr<const DistanceMap> map)
+    : dmap(std::move(map))
+  {
+    if (!dmap || dmap->n_points()[0] == 0)
+      throw GeometryError("DistanceMapShape: the distance map is missing or "
+                          "empty; build it first.");
+  }
+
+  double
+  DistanceMapShape::signed_distance(const Eigen::Vector3d &p,
+                                    Eigen::Vector3d       *normal) const
+  {
+    return dmap->distance(p, normal);
+  }
+
+  bool
+  DistanceMapShape::contains(const Eigen::Vector3d &p) const
+  {
+    return dmap->covers(p) && dmap->distance(p) <= 0.;
+  }
+
+  BoundingBox
+  DistanceMapShape::bounding_box() const
+  {
+    return dmap->grid_box();
+  }
+
+  double
+  DistanceMapShape::volume() const
+  {
+    const auto &n     = dmap->n_points();
+    std::size_t count = 0;
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i)
+          count += dmap->value(i, j, k) < 0.;
+    const double h = dmap->spacing();
+    return static_cast<double>(count) * h * h * h;
+  }
+
+} // namespace particulate::geometry
