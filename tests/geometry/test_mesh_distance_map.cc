@@ -39,9 +39,9 @@ main(int argc, char **argv)
       // At the grid points themselves the pseudo-normal sign must match the
       // exact side test everywhere (not only far from the surface).
       long grid_mismatch = 0, grid_checked = 0;
-      for (int k = 0; k < map.n_points()[2]; k += 2)
-        for (int j = 0; j < map.n_points()[1]; j += 2)
-          for (int i = 0; i < map.n_points()[0]; i += 2)
+      for (int k = 0; k < map.n_points()[2]; ++k)
+        for (int j = 0; j < map.n_points()[1]; ++j)
+          for (int i = 0; i < map.n_points()[0]; ++i)
             {
               const Vector3d p = map.point(i, j, k);
               if (map.value(i, j, k) == 0.)
