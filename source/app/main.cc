@@ -3,6 +3,7 @@
 
 #include <particulate/core/input_file.h>
 #include <particulate/core/mesh.h>
+#include <particulate/fbm/particulate_flow_simulation.h>
 #include <particulate/fluid/flow_simulation.h>
 
 #include <deal.II/base/mpi.h>
@@ -40,17 +41,34 @@ namespace {
    * Read and check @p filename completely: names, values, and the checks
    * that need the coarse mesh (boundary ids). Nothing is written.
    */
-  fluid::FlowCaseParameters
+  fbm::ParticulateFlowParameters
   read_case(dealii::ParameterHandler &prm, const std::string &filename)
   {
     core::parse_input_file(prm, filename);
-    fluid::FlowCaseParameters parameters;
+    fbm::ParticulateFlowParameters all;
+    fluid::FlowCaseParameters     &parameters = all.flow;
     parameters.parse(prm);
     parameters.mesh.base_directory
       = std::filesystem::path(filename).parent_path().string();
     if (parameters.mesh.base_directory.empty())
       parameters.mesh.base_directory = ".";
-    return parameters;
+    try
+      {
+        all.particles.parse(prm, parameters.simulation.dimension);
+      }
+    catch (const std::runtime_error &e)
+      {
+        throw std::runtime_error(filename + ": " + e.what());
+      }
+    // never ignore input silently
+    if (parameters.simulation.type == core::SimulationParameters::Type::fluid
+        && all.particles.n_particles() > 0)
+      throw std::runtime_error(
+        filename
+        + ": subsection 'Particles' sets 'Positions', but 'Type' in "
+          "subsection 'Simulation' is 'fluid', which has no particles. Set "
+          "'Type = particulate flow'.");
+    return all;
   }
 
   template <int dim>
@@ -77,12 +95,23 @@ namespace {
 
   template <int dim>
   void
-  run_case(const fluid::FlowCaseParameters &parameters,
-           const std::string               &filename,
-           MPI_Comm                         comm)
+  run_case(const fbm::ParticulateFlowParameters &parameters,
+           const std::string                    &filename,
+           MPI_Comm                              comm)
   {
-    fluid::FlowSimulation<dim> simulation(parameters, filename, comm);
-    simulation.run();
+    if (parameters.flow.simulation.type
+        == core::SimulationParameters::Type::particulate_flow)
+      {
+        fbm::ParticulateFlowSimulation<dim> simulation(parameters,
+                                                       filename,
+                                                       comm);
+        simulation.run();
+      }
+    else
+      {
+        fluid::FlowSimulation<dim> simulation(parameters.flow, filename, comm);
+        simulation.run();
+      }
   }
 } // namespace
 
@@ -100,6 +129,7 @@ main(int argc, char **argv)
     {
       dealii::ParameterHandler prm;
       fluid::FlowCaseParameters::declare(prm);
+      fbm::ParticleParameters::declare(prm);
 
       if (args.empty() || args[0] == "--help" || args[0] == "-h")
         {
@@ -135,8 +165,9 @@ main(int argc, char **argv)
           return 1;
         }
 
-      const fluid::FlowCaseParameters parameters = read_case(prm, filename);
-      const unsigned int              dim = parameters.simulation.dimension;
+      const fbm::ParticulateFlowParameters all = read_case(prm, filename);
+      const fluid::FlowCaseParameters     &parameters = all.flow;
+      const unsigned int dim = parameters.simulation.dimension;
       if (dim == 2)
         check_case<2>(parameters, filename, comm);
       else
@@ -163,9 +194,9 @@ main(int argc, char **argv)
         }
       MPI_Barrier(comm);
       if (dim == 2)
-        run_case<2>(parameters, filename, comm);
+        run_case<2>(all, filename, comm);
       else
-        run_case<3>(parameters, filename, comm);
+        run_case<3>(all, filename, comm);
     }
   catch (const std::exception &e)
     {

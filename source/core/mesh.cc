@@ -9,6 +9,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -25,7 +26,8 @@ namespace particulate {
       prm.declare_entry(
         "Type",
         "hyper rectangle",
-        Patterns::Selection("hyper rectangle|channel with cylinder|file"),
+        Patterns::Selection(
+          "hyper rectangle|graded rectangle|channel with cylinder|file"),
         "Where the coarse mesh comes from. 'hyper rectangle': a box with "
         "boundary ids 0..2*dim-1 (x-min, x-max, y-min, y-max, z-min, z-max). "
         "'channel with cylinder': the DFG benchmark channel (height and depth "
@@ -55,6 +57,27 @@ namespace particulate {
                         "1, 1, 1",
                         Patterns::List(Patterns::Integer(1), 2, 3),
                         "Hyper rectangle: coarse cells per direction.");
+      prm.declare_entry("Fine region lower corner",
+                        "0, 0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Graded rectangle: lower corner of the region of fine "
+                        "cells [m] (e.g. around the path of a particle).");
+      prm.declare_entry("Fine region upper corner",
+                        "1, 1, 1",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Graded rectangle: upper corner of the fine region "
+                        "[m].");
+      prm.declare_entry("Fine cell size",
+                        "0.1",
+                        Patterns::Double(0.),
+                        "Graded rectangle: edge length of the coarse cells "
+                        "inside the fine region [m] (before 'Refinements').");
+      prm.declare_entry("Grading ratio",
+                        "1.2",
+                        Patterns::Double(1.),
+                        "Graded rectangle: size ratio of neighbouring cells "
+                        "outside the fine region (1: uniform cells of the "
+                        "fine size everywhere).");
       prm.declare_entry("Cylinder shell width",
                         "0.03",
                         Patterns::Double(0.),
@@ -87,6 +110,7 @@ namespace particulate {
       const std::string t = prm.get("Type");
       type                = t == "file"                  ? Type::file :
                             t == "channel with cylinder" ? Type::channel_with_cylinder :
+                            t == "graded rectangle"      ? Type::graded_rectangle :
                                                            Type::hyper_rectangle;
       file_name           = prm.get("File name");
       refinements         = prm.get_integer("Refinements");
@@ -98,6 +122,10 @@ namespace particulate {
       };
       lower_corner = doubles("Lower corner");
       upper_corner = doubles("Upper corner");
+      fine_lower     = doubles("Fine region lower corner");
+      fine_upper     = doubles("Fine region upper corner");
+      fine_cell_size = core::get_positive_double(prm, "Fine cell size", "Mesh");
+      grading_ratio  = prm.get_double("Grading ratio");
       subdivisions.clear();
       for (const auto &s :
            Utilities::split_string_list(prm.get("Subdivisions")))
@@ -217,6 +245,53 @@ namespace particulate {
 
 
 
+    std::vector<double>
+    graded_cell_sizes(const double lower,
+                      const double upper,
+                      const double fine_lower,
+                      const double fine_upper,
+                      const double h,
+                      const double ratio)
+    {
+      const double a = std::clamp(fine_lower, lower, upper);
+      const double b = std::clamp(fine_upper, a, upper);
+      // cells growing from size h away from the fine region over a length
+      // L; the sequence is scaled to fill L exactly
+      const auto growing = [&](const double length) {
+        std::vector<double> cells;
+        if (length <= 1e-12 * (upper - lower))
+          return cells;
+        double size = h, sum = 0.;
+        while (true)
+          {
+            size *= ratio;
+            if (sum + size > length)
+              break;
+            cells.push_back(size);
+            sum += size;
+          }
+        if (cells.empty())
+          return std::vector<double>{length};
+        for (double &c : cells) // stretch (by less than one cell) to fit
+          c *= length / sum;
+        return cells;
+      };
+      std::vector<double> sizes;
+      const auto          before = growing(a - lower);
+      sizes.insert(sizes.end(), before.rbegin(), before.rend());
+      if (b - a > 0.)
+        {
+          const unsigned int n
+            = std::max(1, static_cast<int>(std::round((b - a) / h)));
+          sizes.insert(sizes.end(), n, (b - a) / n);
+        }
+      const auto after = growing(upper - b);
+      sizes.insert(sizes.end(), after.begin(), after.end());
+      return sizes;
+    }
+
+
+
     template <int dim>
     void
     create_mesh(const MeshParameters                           &p,
@@ -237,6 +312,31 @@ namespace particulate {
                 corner<dim>(p.lower_corner, "Lower corner"),
                 corner<dim>(p.upper_corner, "Upper corner"),
                 /*colorize=*/true);
+              break;
+            }
+          case MeshParameters::Type::graded_rectangle:
+            {
+              const Point<dim> lower
+                = corner<dim>(p.lower_corner, "Lower corner");
+              const Point<dim> upper
+                = corner<dim>(p.upper_corner, "Upper corner");
+              const Point<dim> fine_lower
+                = corner<dim>(p.fine_lower, "Fine region lower corner");
+              const Point<dim> fine_upper
+                = corner<dim>(p.fine_upper, "Fine region upper corner");
+              std::vector<std::vector<double>> steps(dim);
+              for (unsigned int d = 0; d < dim; ++d)
+                steps[d] = graded_cell_sizes(lower[d],
+                                             upper[d],
+                                             fine_lower[d],
+                                             fine_upper[d],
+                                             p.fine_cell_size,
+                                             p.grading_ratio);
+              GridGenerator::subdivided_hyper_rectangle(serial,
+                                                        steps,
+                                                        lower,
+                                                        upper,
+                                                        /*colorize=*/true);
               break;
             }
           case MeshParameters::Type::channel_with_cylinder:

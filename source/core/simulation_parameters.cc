@@ -12,9 +12,12 @@ namespace particulate {
       prm.enter_subsection("Simulation");
       prm.declare_entry("Type",
                         "fluid",
-                        Patterns::Selection("fluid"),
+                        Patterns::Selection("fluid|particulate flow"),
                         "What to simulate. 'fluid': incompressible "
-                        "Navier-Stokes flow around body-fitted obstacles.");
+                        "Navier-Stokes flow around body-fitted obstacles. "
+                        "'particulate flow': rigid particles (subsection "
+                        "'Particles') in the fluid by the fictitious boundary "
+                        "method.");
       prm.declare_entry("Dimension",
                         "2",
                         Patterns::Integer(2, 3),
@@ -26,7 +29,9 @@ namespace particulate {
     SimulationParameters::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Simulation");
-      type      = Type::fluid;
+      type      = prm.get("Type") == "particulate flow" ?
+                    Type::particulate_flow :
+                    Type::fluid;
       dimension = prm.get_integer("Dimension");
       prm.leave_subsection();
     }

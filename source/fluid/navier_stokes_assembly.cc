@@ -195,6 +195,31 @@ namespace particulate {
 
 
 
+    namespace {
+      /**
+       * Pressures of cells whose velocity nodes are all constrained (cells
+       * inside a fictitious-boundary body) have empty rows in B, hence in
+       * L_p = B D^{-1} B^T. They are decoupled from the flow and the solver
+       * keeps them at zero; a diagonal entry of the size of the others keeps
+       * the multigrid hierarchy of L_p well defined.
+       */
+      void
+      regularise_empty_pressure_rows(TrilinosWrappers::SparseMatrix &matrix)
+      {
+        const IndexSet &owned = matrix.locally_owned_range_indices();
+        double          largest = 0.;
+        for (const auto row : owned)
+          largest = std::max(largest, std::abs(matrix.diag_element(row)));
+        largest = Utilities::MPI::max(largest, matrix.get_mpi_communicator());
+        for (const auto row : owned)
+          if (std::abs(matrix.diag_element(row)) <= 1e-12 * largest)
+            matrix.set(row, row, largest);
+        matrix.compress(VectorOperation::insert);
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     NavierStokes<dim>::build_schur_complement_approximation()
@@ -206,6 +231,7 @@ namespace particulate {
       system_matrix.block(1, 0).mmult(pressure_laplacian,
                                       system_matrix.block(0, 1),
                                       inverse_lumped_mass);
+      regularise_empty_pressure_rows(pressure_laplacian);
       if (!parameters.boundary_conditions.pressure_is_determined())
         {
           // Enclosed flow: L_p is singular (constant pressures). Pinning one

@@ -178,8 +178,50 @@ namespace particulate {
                                                               c,
                                                               mapping);
             }
+          // Fictitious boundary (thesis eq. 5.17): u = U + omega x (x - X)
+          // at the velocity nodes inside bodies. The boundary conditions
+          // and hanging nodes come first and keep their rows.
+          for (const auto &[dof, value] : fictitious_boundary_values)
+            if (c.can_store_line(dof) && !c.is_constrained(dof))
+              {
+                c.add_line(dof);
+                if (!homogeneous)
+                  c.set_inhomogeneity(dof, value);
+              }
           c.close();
         }
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::set_fictitious_boundary_values(
+      std::vector<std::pair<types::global_dof_index, double>> values)
+    {
+      // L_p = B D^{-1} B^T depends on which velocity DoFs are constrained:
+      // rebuild it when a body has moved over a node (the values alone
+      // change every step and do not matter to it).
+      const bool same_nodes = std::equal(
+        values.begin(),
+        values.end(),
+        fictitious_boundary_values.begin(),
+        fictitious_boundary_values.end(),
+        [](const auto &a, const auto &b) { return a.first == b.first; });
+      // collective: every rank must rebuild together
+      if (Utilities::MPI::max(same_nodes ? 0 : 1, communicator) > 0)
+        schur_approximation_is_current = false;
+      fictitious_boundary_values = std::move(values);
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::set_decoupled_pressure_dofs(
+      std::vector<types::global_dof_index> dofs)
+    {
+      decoupled_pressure_dofs = std::move(dofs);
     }
 
 
@@ -203,6 +245,9 @@ namespace particulate {
           for (unsigned int d = 0; d < dim + 1; ++d)
             coupling[c][d]
               = (c == dim && d == dim) ? DoFTools::none : DoFTools::always;
+        // Constrained rows keep their couplings (keep_constrained_dofs =
+        // true): the fictitious-boundary constraints change every time step
+        // and must find their entries in the pattern.
         TrilinosWrappers::BlockSparsityPattern sp(owned_partitioning,
                                                   owned_partitioning,
                                                   relevant_partitioning,
@@ -211,7 +256,7 @@ namespace particulate {
                                         coupling,
                                         sp,
                                         zero_constraints,
-                                        false,
+                                        true,
                                         rank);
         sp.compress();
         system_matrix.reinit(sp);

@@ -15,6 +15,7 @@ namespace particulate {
       enum class Type
       {
         hyper_rectangle,
+        graded_rectangle,
         channel_with_cylinder,
         file
       };
@@ -24,6 +25,12 @@ namespace particulate {
       std::vector<double>       lower_corner{0., 0., 0.};
       std::vector<double>       upper_corner{1., 1., 1.};
       std::vector<unsigned int> subdivisions{1, 1, 1};
+      /// graded rectangle: the fine region, its cell size and the growth
+      /// ratio of the cells outside it
+      std::vector<double> fine_lower{0., 0., 0.};
+      std::vector<double> fine_upper{1., 1., 1.};
+      double              fine_cell_size = 0.1; ///< [m], coarse level
+      double              grading_ratio  = 1.2;
       double                    cylinder_shell_width = 0.03;
       unsigned int              cylinder_shells      = 2;
       double cylinder_center_x = 0.2; ///< [m], DFG 2D: 0.2, 3D-1Z: 0.5
@@ -51,6 +58,20 @@ namespace particulate {
     void
     create_mesh(const MeshParameters &parameters,
                 dealii::parallel::fullydistributed::Triangulation<dim> &tria);
+
+    /**
+     * Cell sizes of a graded 1D subdivision of [@p lower, @p upper]: cells
+     * of about @p h inside [@p fine_lower, @p fine_upper] (sized to fit it
+     * exactly), growing by the factor @p ratio per cell outside it, the
+     * growing cells on each side scaled to end exactly at the boundary.
+     */
+    std::vector<double>
+    graded_cell_sizes(const double lower,
+                      const double upper,
+                      const double fine_lower,
+                      const double fine_upper,
+                      const double h,
+                      const double ratio);
 
     /** All boundary ids present on the (global) mesh. */
     template <int dim>

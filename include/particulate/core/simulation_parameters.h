@@ -13,7 +13,8 @@ namespace particulate {
       /** What the run simulates. */
       enum class Type
       {
-        fluid ///< incompressible flow with body-fitted obstacles
+        fluid,           ///< incompressible flow with body-fitted obstacles
+        particulate_flow ///< particles in the flow (fictitious boundaries)
       };
       Type         type      = Type::fluid;
       unsigned int dimension = 2;

@@ -116,6 +116,33 @@ namespace particulate {
       interpolate_velocity(const dealii::Function<dim> &velocity,
                            BlockVector                 &vector) const;
 
+      /**
+       * Extra Dirichlet values on velocity DoFs, used by the fictitious
+       * boundary method to impose the rigid velocity inside bodies (thesis
+       * eq. 5.10c, 5.17): pairs of a locally relevant DoF index and its
+       * value. They enter the constraints of every following stage (with
+       * zero values for the Newton updates) on DoFs that the boundary
+       * conditions and hanging nodes leave free, and stay until replaced.
+       * Every rank must pass the values of all its locally relevant DoFs
+       * inside bodies, so that the constraints agree across ranks.
+       */
+      void
+      set_fictitious_boundary_values(
+        std::vector<std::pair<dealii::types::global_dof_index, double>>
+          values);
+
+      /**
+       * Pressure DoFs (locally owned) of cells that lie entirely inside
+       * bodies. Every velocity test function they couple to is constrained,
+       * so the equations do not determine them; the solver sets them to
+       * zero after every Newton update so that they stay bounded (the
+       * Krylov method would otherwise let them drift, and they reappear in
+       * the equations when their cell is uncovered by a moving body).
+       */
+      void
+      set_decoupled_pressure_dofs(
+        std::vector<dealii::types::global_dof_index> dofs);
+
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void
       set_mesh_velocity(const BlockVector &mesh_velocity);
@@ -225,6 +252,10 @@ namespace particulate {
       dealii::AffineConstraints<double> nonzero_constraints;
       /// the same rows with zero values (applied to Newton updates)
       dealii::AffineConstraints<double> zero_constraints;
+      /// velocity values imposed inside fictitious-boundary bodies
+      std::vector<std::pair<dealii::types::global_dof_index, double>>
+        fictitious_boundary_values;
+      std::vector<dealii::types::global_dof_index> decoupled_pressure_dofs;
 
       dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
       /// pressure mass matrix M_p in block (1,1); other blocks empty

@@ -1,0 +1,127 @@
+#ifndef particulate_fbm_fictitious_boundary_h
+#define particulate_fbm_fictitious_boundary_h
+
+#include <particulate/fluid/navier_stokes.h>
+#include <particulate/geometry/point_hash_grid.h>
+#include <particulate/rigid/world.h>
+
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace particulate {
+  namespace fbm {
+    /**
+     * The liquid-solid interface of the fictitious boundary method (thesis
+     * §5.3.1, §5.4): which Q2 velocity nodes lie inside which body, and the
+     * rigid velocity u = U + omega x (x - X) imposed there (eq. 5.9, 5.17).
+     *
+     * The nodes of this rank's locally relevant cells (owned and ghost) are
+     * collected once per mesh into a hash grid (geometry::PointHashGrid), so
+     * a classification tests only the nodes in each body's bounding box
+     * (§5.4.2). Ghost nodes are classified too: every rank then builds
+     * the same constraints for the DoFs it shares, without communication.
+     */
+    template <int dim>
+    class FictitiousBoundary
+    {
+    public:
+      using DofIndex = dealii::types::global_dof_index;
+
+      /** A body as the interface sees it. */
+      struct Body
+      {
+        const rigid::RigidBody *body = nullptr;
+        /// radius of the ball around the centre that holds the body [m]
+        double radius = 0.;
+      };
+
+      explicit FictitiousBoundary(const fluid::NavierStokes<dim> &flow);
+
+      /** Collect the velocity nodes; call again after the mesh changed. */
+      void
+      setup();
+
+      /**
+       * Mark every node by the first body that contains it (signed distance
+       * <= 0), or -1.
+       */
+      void
+      classify(const std::vector<Body> &bodies);
+
+      /**
+       * The rigid velocities at the marked nodes, as (DoF, value) pairs for
+       * fluid::NavierStokes::set_fictitious_boundary_values().
+       */
+      std::vector<std::pair<DofIndex, double>>
+      constraint_values(const std::vector<Body> &bodies) const;
+
+      /** The locally owned pressure DoFs of the owned cells whose velocity
+       *  nodes all lie inside one body (see
+       *  fluid::NavierStokes::set_decoupled_pressure_dofs()). */
+      std::vector<DofIndex>
+      covered_pressure_dofs() const;
+
+      /** Number of nodes (of locally owned cells, all ranks) inside body
+       *  @p b: a measure of how well the mesh resolves it. */
+      unsigned long
+      n_nodes_inside(const unsigned int b) const;
+
+      /** The body marking node @p i, or -1. */
+      int
+      body_of_node(const unsigned int i) const
+      {
+        return node_body[i];
+      }
+
+      /** Locally owned cells, in the order of cell_nodes(). */
+      const std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> &
+      owned_cells() const
+      {
+        return cells;
+      }
+
+      /** For owned cell @p c, the node of each velocity support point
+       *  (nodes_per_cell() entries). */
+      const unsigned int *
+      cell_nodes(const unsigned int c) const
+      {
+        return &nodes_of_cells[c * nodes_per_cell_];
+      }
+
+      unsigned int
+      nodes_per_cell() const
+      {
+        return nodes_per_cell_;
+      }
+
+      const Eigen::Vector3d &
+      node_position(const unsigned int i) const
+      {
+        return positions[i];
+      }
+
+    private:
+      const fluid::NavierStokes<dim> &flow;
+      /// per node its position (z = 0 in 2D) and its dim velocity DoFs
+      std::vector<Eigen::Vector3d>          positions;
+      std::vector<std::array<DofIndex, 3>>  node_dofs;
+      std::vector<bool>                     node_is_owned_cell_node;
+      std::unique_ptr<geometry::PointHashGrid> grid;
+      std::vector<int>                      node_body;
+      std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator>
+                                cells;
+      std::vector<unsigned int> nodes_of_cells;
+      std::vector<DofIndex>     pressure_dofs_of_cells;
+      unsigned int              pressure_dofs_per_cell = 0;
+      unsigned int              nodes_per_cell_ = 0;
+    };
+  } // namespace fbm
+} // namespace particulate
+
+#endif

@@ -1,0 +1,78 @@
+#ifndef particulate_fbm_particle_parameters_h
+#define particulate_fbm_particle_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace particulate {
+  namespace fbm {
+    /**
+     * subsection `Particles`: the rigid bodies of a fictitious-boundary run
+     * (thesis §5.2-5.3) and the coupling options. All particles share one
+     * shape, size and material; their number is the number of `Positions`.
+     */
+    struct ParticleParameters
+    {
+      /** Ball in 3D; disk (a cylinder of unit depth along z) in 2D. */
+      enum class Shape
+      {
+        sphere,
+        disk
+      };
+      /** How the particles move. */
+      enum class Motion
+      {
+        free, ///< Newton-Euler under fluid, gravity and contact forces
+        fixed ///< at rest (an obstacle described by the FBM)
+      };
+
+      Shape  shape   = Shape::sphere;
+      double radius  = 0.0075; ///< [m]
+      double density = 1120.;  ///< particle density rho_p [kg/m^3]
+      Motion motion  = Motion::free;
+      /// centres of mass [m] (z = 0 in 2D)
+      std::vector<Eigen::Vector3d> positions;
+      /// initial velocities [m/s], empty or one per particle
+      std::vector<Eigen::Vector3d> velocities;
+      Eigen::Vector3d              gravity = Eigen::Vector3d(0., 0., -9.81);
+      /// world axes along which the particles may not move (symmetry)
+      std::array<bool, 3> locked_translation = {{false, false, false}};
+      /// world axes about which the particles may not rotate
+      std::array<bool, 3> locked_rotation = {{false, false, false}};
+      /// C in m_a = C rho_f V of the added-mass-corrected coupling
+      double added_mass_coefficient = 1.;
+      /// contact handling
+      std::string  contact_solver = "sequential impulses";
+      double       restitution    = 0.;
+      double       friction       = 0.;
+      /// faces of the mesh's bounding box that are walls for contacts, in
+      /// the order x-, x+, y-, y+, z-, z+
+      std::array<bool, 6> walls = {{true, true, true, true, true, true}};
+      unsigned int substeps       = 1;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+
+      /**
+       * Read the entries; @p dim is the space dimension of the run (it
+       * decides how many coordinates a position has). Throws
+       * std::runtime_error with the entry and what to write.
+       */
+      void
+      parse(dealii::ParameterHandler &prm, const unsigned int dim);
+
+      unsigned int
+      n_particles() const
+      {
+        return positions.size();
+      }
+    };
+  } // namespace fbm
+} // namespace particulate
+
+#endif

@@ -1,0 +1,68 @@
+#ifndef particulate_fbm_particulate_flow_simulation_h
+#define particulate_fbm_particulate_flow_simulation_h
+
+#include <particulate/fbm/particle_parameters.h>
+#include <particulate/fluid/flow_simulation.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include <mpi.h>
+
+namespace particulate {
+  namespace fbm {
+    /** Everything a `Simulation / Type = particulate flow` case reads. */
+    struct ParticulateFlowParameters
+    {
+      fluid::FlowCaseParameters flow;
+      ParticleParameters        particles;
+    };
+
+    /** What a run measured; used by tests and the final summary. */
+    struct ParticulateFlowSummary
+    {
+      unsigned int n_steps  = 0;
+      double       end_time = 0.;
+      unsigned long n_dofs  = 0;
+      /// per particle, at the end
+      std::vector<Eigen::Vector3d> position, velocity, force, torque;
+      /// per particle, the largest speed reached and when [m/s, s]
+      std::vector<double> max_speed, time_of_max_speed;
+      double              wall_seconds = 0.;
+    };
+
+    /**
+     * The coupled time loop of the fictitious boundary method (thesis
+     * §5.3): per time step t_n -> t_n+1
+     *  1. mark the velocity nodes inside the particles at t_n and impose
+     *     u = U + omega x (x - X) there (eq. 5.17);
+     *  2. advance the fluid (fractional-step theta, eq. 5.14);
+     *  3. hydrodynamic force and torque by the volume integrals (eq. 5.13);
+     *  4. advance the rigid bodies with the fluid loads, buoyancy-corrected
+     *     gravity and contacts (eq. 5.3) in the rigid-body engine, where the
+     *     domain walls are fixed half-spaces.
+     * The explicit coupling is stabilised for light particles by an
+     * added-mass correction (doc/fbm.md).
+     */
+    template <int dim>
+    class ParticulateFlowSimulation
+    {
+    public:
+      ParticulateFlowSimulation(const ParticulateFlowParameters &parameters,
+                                const std::string &parameter_file,
+                                MPI_Comm           comm);
+
+      ParticulateFlowSummary
+      run();
+
+    private:
+      const ParticulateFlowParameters &parameters;
+      const std::string                parameter_file;
+      MPI_Comm                         communicator;
+    };
+  } // namespace fbm
+} // namespace particulate
+
+#endif

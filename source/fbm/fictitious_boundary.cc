@@ -1,0 +1,185 @@
+#include <particulate/fbm/fictitious_boundary.h>
+#include <particulate/geometry/bounding_box.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <unordered_map>
+
+namespace particulate {
+  namespace fbm {
+    using namespace dealii;
+
+    template <int dim>
+    FictitiousBoundary<dim>::FictitiousBoundary(
+      const fluid::NavierStokes<dim> &flow)
+      : flow(flow)
+    {}
+
+
+
+    template <int dim>
+    void
+    FictitiousBoundary<dim>::setup()
+    {
+      const FESystem<dim>      &fe          = flow.get_fe();
+      const FiniteElement<dim> &velocity_fe = fe.base_element(0);
+      nodes_per_cell_                       = velocity_fe.n_dofs_per_cell();
+      const Quadrature<dim> support(velocity_fe.get_unit_support_points());
+      FEValues<dim>         fe_values(flow.get_mapping(),
+                              fe,
+                              support,
+                              update_quadrature_points);
+
+      // local_index[k][c]: the cell-local DoF of velocity component c at
+      // support point k of the velocity element
+      std::vector<std::array<unsigned int, 3>> local_index(nodes_per_cell_);
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const auto base = fe.system_to_base_index(i);
+          if (base.first.first == 0)
+            local_index[base.second][base.first.second] = i;
+        }
+
+      positions.clear();
+      node_dofs.clear();
+      node_is_owned_cell_node.clear();
+      cells.clear();
+      nodes_of_cells.clear();
+      pressure_dofs_of_cells.clear();
+      pressure_dofs_per_cell = fe.base_element(1).n_dofs_per_cell();
+      std::unordered_map<DofIndex, unsigned int> node_of_dof;
+      std::vector<DofIndex> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : flow.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dof_indices);
+            const bool owned = cell->is_locally_owned();
+            if (owned)
+              {
+                cells.push_back(cell);
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  if (fe.system_to_component_index(i).first == dim)
+                    pressure_dofs_of_cells.push_back(dof_indices[i]);
+              }
+            for (unsigned int k = 0; k < nodes_per_cell_; ++k)
+              {
+                const DofIndex key = dof_indices[local_index[k][0]];
+                auto [it, inserted]
+                  = node_of_dof.emplace(key, positions.size());
+                if (inserted)
+                  {
+                    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+                    const auto     &q = fe_values.quadrature_point(k);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      p[d] = q[d];
+                    positions.push_back(p);
+                    std::array<DofIndex, 3> dofs{{0, 0, 0}};
+                    for (unsigned int c = 0; c < dim; ++c)
+                      dofs[c] = dof_indices[local_index[k][c]];
+                    node_dofs.push_back(dofs);
+                    node_is_owned_cell_node.push_back(false);
+                  }
+                if (owned)
+                  {
+                    nodes_of_cells.push_back(it->second);
+                    node_is_owned_cell_node[it->second] = true;
+                  }
+              }
+          }
+      grid = std::make_unique<geometry::PointHashGrid>(positions);
+      node_body.assign(positions.size(), -1);
+    }
+
+
+
+    template <int dim>
+    void
+    FictitiousBoundary<dim>::classify(const std::vector<Body> &bodies)
+    {
+      std::fill(node_body.begin(), node_body.end(), -1);
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const rigid::RigidBody &body = *bodies[b].body;
+          // the ball of the body, slightly enlarged against rounding; in 2D
+          // the nodes lie in the plane z = 0
+          const double          r = bodies[b].radius * (1. + 1e-9) + 1e-14;
+          geometry::BoundingBox box;
+          box.lower = body.position - Eigen::Vector3d::Constant(r);
+          box.upper = body.position + Eigen::Vector3d::Constant(r);
+          if (dim == 2)
+            {
+              box.lower[2] = -r;
+              box.upper[2] = r;
+            }
+          grid->for_each_in_box(box, [&](const std::size_t i) {
+            if (node_body[i] < 0 && body.signed_distance(positions[i]) <= 0.)
+              node_body[i] = b;
+          });
+        }
+    }
+
+
+
+    template <int dim>
+    std::vector<std::pair<typename FictitiousBoundary<dim>::DofIndex, double>>
+    FictitiousBoundary<dim>::constraint_values(
+      const std::vector<Body> &bodies) const
+    {
+      std::vector<std::pair<DofIndex, double>> values;
+      for (unsigned int i = 0; i < positions.size(); ++i)
+        if (node_body[i] >= 0)
+          {
+            const Eigen::Vector3d u
+              = bodies[node_body[i]].body->velocity_at(positions[i]);
+            for (unsigned int c = 0; c < dim; ++c)
+              values.emplace_back(node_dofs[i][c], u[c]);
+          }
+      return values;
+    }
+
+
+
+    template <int dim>
+    std::vector<typename FictitiousBoundary<dim>::DofIndex>
+    FictitiousBoundary<dim>::covered_pressure_dofs() const
+    {
+      std::vector<DofIndex> dofs;
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          const unsigned int *nodes = cell_nodes(c);
+          const int           b     = node_body[nodes[0]];
+          bool                covered = b >= 0;
+          for (unsigned int k = 1; k < nodes_per_cell_ && covered; ++k)
+            covered = node_body[nodes[k]] == b;
+          if (covered)
+            dofs.insert(dofs.end(),
+                        pressure_dofs_of_cells.begin()
+                          + c * pressure_dofs_per_cell,
+                        pressure_dofs_of_cells.begin()
+                          + (c + 1) * pressure_dofs_per_cell);
+        }
+      return dofs;
+    }
+
+
+
+    template <int dim>
+    unsigned long
+    FictitiousBoundary<dim>::n_nodes_inside(const unsigned int b) const
+    {
+      // count each node once: on the rank that owns its x-velocity DoF
+      const IndexSet &owned = flow.get_dof_handler().locally_owned_dofs();
+      unsigned long   n     = 0;
+      for (unsigned int i = 0; i < positions.size(); ++i)
+        if (node_body[i] == int(b) && owned.is_element(node_dofs[i][0]))
+          ++n;
+      return Utilities::MPI::sum(n, flow.get_communicator());
+    }
+
+    template class FictitiousBoundary<2>;
+    template class FictitiousBoundary<3>;
+  } // namespace fbm
+} // namespace particulate

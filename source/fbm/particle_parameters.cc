@@ -1,0 +1,245 @@
+#include <particulate/fbm/particle_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fbm {
+    using namespace dealii;
+
+    namespace {
+      [[noreturn]] void
+      fail(const std::string &entry, const std::string &what)
+      {
+        throw std::runtime_error("subsection 'Particles', entry '" + entry
+                                 + "': " + what);
+      }
+
+      /** "x, y[, z]; x, y[, z]; ..." with @p dim coordinates each. */
+      std::vector<Eigen::Vector3d>
+      parse_points(const std::string &text,
+                   const unsigned int dim,
+                   const std::string &entry)
+      {
+        std::vector<Eigen::Vector3d> points;
+        if (Utilities::trim(text).empty())
+          return points;
+        for (const std::string &item : Utilities::split_string_list(text, ';'))
+          {
+            const auto coordinates = Utilities::split_string_list(item, ',');
+            if (coordinates.size() != dim)
+              fail(entry,
+                   "'" + item + "' has " + std::to_string(coordinates.size())
+                     + " coordinates; a " + std::to_string(dim)
+                     + "D run needs " + std::to_string(dim)
+                     + " per point, points separated by ';'.");
+            Eigen::Vector3d p = Eigen::Vector3d::Zero();
+            for (unsigned int d = 0; d < dim; ++d)
+              try
+                {
+                  p[d] = Utilities::string_to_double(coordinates[d]);
+                }
+              catch (...)
+                {
+                  fail(entry, "'" + coordinates[d] + "' is not a number.");
+                }
+            points.push_back(p);
+          }
+        return points;
+      }
+
+      std::array<bool, 3>
+      parse_axes(const std::string &text, const std::string &entry)
+      {
+        std::array<bool, 3> axes = {{false, false, false}};
+        for (const std::string &a : Utilities::split_string_list(text, ','))
+          {
+            if (a == "x")
+              axes[0] = true;
+            else if (a == "y")
+              axes[1] = true;
+            else if (a == "z")
+              axes[2] = true;
+            else
+              fail(entry,
+                   "'" + a + "' is not an axis; write a list of x, y, z.");
+          }
+        return axes;
+      }
+    } // namespace
+
+
+
+    void
+    ParticleParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Particles");
+      prm.declare_entry("Shape",
+                        "sphere",
+                        Patterns::Selection("sphere|disk"),
+                        "Shape of every particle: 'sphere' (3D runs) or "
+                        "'disk' (2D runs; a cylinder of unit depth).");
+      prm.declare_entry("Radius",
+                        "0.0075",
+                        Patterns::Double(0.),
+                        "Particle radius [m].");
+      prm.declare_entry("Density",
+                        "1120",
+                        Patterns::Double(0.),
+                        "Particle density rho_p [kg/m^3]. The buoyancy uses "
+                        "the fluid 'Density' of subsection 'Fluid'.");
+      prm.declare_entry("Motion",
+                        "free",
+                        Patterns::Selection("free|fixed"),
+                        "'free': the particles move under the fluid force, "
+                        "buoyancy-corrected gravity and contacts (thesis eq. "
+                        "5.3). 'fixed': they stay at rest, obstacles described "
+                        "by the fictitious boundary method.");
+      prm.declare_entry("Positions",
+                        "",
+                        Patterns::Anything(),
+                        "Initial centres [m], one point per particle, "
+                        "coordinates separated by ',' and points by ';', "
+                        "e.g. '0.05, 0.05, 0.1275' or '1, 7.2; 1, 6.8'. "
+                        "The number of points is the number of particles.");
+      prm.declare_entry("Velocities",
+                        "",
+                        Patterns::Anything(),
+                        "Initial velocities [m/s], written like 'Positions' "
+                        "(empty: at rest).");
+      prm.declare_entry("Gravity",
+                        "0, 0, -9.81",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Gravitational acceleration g [m/s^2] (the first dim "
+                        "values are used). It acts on the particles as "
+                        "(rho_p - rho_f) V g; the fluid's hydrostatic "
+                        "pressure is left out of its equations (do not put "
+                        "gravity into 'Fluid / Body force').");
+      prm.declare_entry("Locked translations",
+                        "",
+                        Patterns::Anything(),
+                        "World axes (list of x, y, z) along which the "
+                        "particles may not move, e.g. 'x, y' for a sphere on "
+                        "the symmetry line of a quarter domain.");
+      prm.declare_entry("Locked rotations",
+                        "",
+                        Patterns::Anything(),
+                        "World axes about which the particles may not "
+                        "rotate. 2D runs lock x and y themselves.");
+      prm.declare_entry("Added mass coefficient",
+                        "1",
+                        Patterns::Double(0.),
+                        "C in the added mass m_a = C rho_f V that stabilises "
+                        "the explicit coupling of light particles: the "
+                        "particle is integrated with mass m + m_a under the "
+                        "force F + m_a a_old (and likewise for rotation), "
+                        "which equals m a = F at convergence but stays stable "
+                        "for density ratios near 1 at small time steps. 0 "
+                        "gives the plain explicit coupling.");
+      prm.declare_entry("Contact solver",
+                        "sequential impulses",
+                        Patterns::Selection(
+                          "sequential impulses|projected Gauss-Seidel|DEM"),
+                        "Contact model of the rigid-body engine (thesis "
+                        "§4.4).");
+      prm.declare_entry("Restitution",
+                        "0",
+                        Patterns::Double(0., 1.),
+                        "Coefficient of restitution of particle-particle and "
+                        "particle-wall contacts [-].");
+      prm.declare_entry("Friction",
+                        "0",
+                        Patterns::Double(0.),
+                        "Coulomb friction coefficient of contacts [-].");
+      prm.declare_entry("Domain walls",
+                        "all",
+                        Patterns::Anything(),
+                        "Faces of the mesh's bounding box that are fixed "
+                        "walls of the rigid-body engine, so that particles "
+                        "collide with the container: 'all', 'none', or a "
+                        "list of x-, x+, y-, y+, z-, z+ (leave out symmetry "
+                        "planes).");
+      prm.declare_entry("Rigid substeps",
+                        "1",
+                        Patterns::Integer(1),
+                        "Rigid-body substeps per fluid time step.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    ParticleParameters::parse(ParameterHandler &prm, const unsigned int dim)
+    {
+      prm.enter_subsection("Particles");
+      shape   = prm.get("Shape") == "disk" ? Shape::disk : Shape::sphere;
+      radius  = prm.get_double("Radius");
+      density = prm.get_double("Density");
+      motion  = prm.get("Motion") == "fixed" ? Motion::fixed : Motion::free;
+      positions  = parse_points(prm.get("Positions"), dim, "Positions");
+      velocities = parse_points(prm.get("Velocities"), dim, "Velocities");
+      const auto g
+        = Utilities::split_string_list(prm.get("Gravity"), ',');
+      gravity.setZero();
+      if (g.size() < dim)
+        fail("Gravity", "a " + std::to_string(dim) + "D run needs "
+                          + std::to_string(dim) + " components.");
+      for (unsigned int d = 0; d < dim; ++d)
+        gravity[d] = Utilities::string_to_double(g[d]);
+      locked_translation
+        = parse_axes(prm.get("Locked translations"), "Locked translations");
+      locked_rotation
+        = parse_axes(prm.get("Locked rotations"), "Locked rotations");
+      added_mass_coefficient = prm.get_double("Added mass coefficient");
+      contact_solver         = prm.get("Contact solver");
+      restitution            = prm.get_double("Restitution");
+      friction               = prm.get_double("Friction");
+      const std::string wall_text = Utilities::trim(prm.get("Domain walls"));
+      walls.fill(wall_text == "all");
+      if (wall_text != "all" && wall_text != "none")
+        {
+          const std::array<std::string, 6> names{
+            {"x-", "x+", "y-", "y+", "z-", "z+"}};
+          for (const std::string &w :
+               Utilities::split_string_list(wall_text, ','))
+            {
+              const auto it = std::find(names.begin(), names.end(), w);
+              if (it == names.end())
+                fail("Domain walls",
+                     "'" + w
+                       + "' is not a face; write 'all', 'none' or a list "
+                         "of x-, x+, y-, y+, z-, z+.");
+              walls[it - names.begin()] = true;
+            }
+        }
+      substeps               = prm.get_integer("Rigid substeps");
+      prm.leave_subsection();
+
+      if (dim == 2)
+        {
+          // planar motion: no z translation, rotation only about z
+          locked_translation[2] = true;
+          locked_rotation[0] = locked_rotation[1] = true;
+        }
+      // a pure fluid run has no particles: nothing below concerns it
+      if (positions.empty())
+        return;
+      if (dim == 2 && shape != Shape::disk)
+        fail("Shape", "a 2D run needs 'disk'.");
+      if (dim == 3 && shape != Shape::sphere)
+        fail("Shape", "a 3D run needs 'sphere'.");
+      if (!(radius > 0.))
+        fail("Radius", "must be positive.");
+      if (!(density > 0.))
+        fail("Density", "must be positive.");
+      if (!velocities.empty() && velocities.size() != positions.size())
+        fail("Velocities",
+             "gives " + std::to_string(velocities.size())
+               + " velocities for " + std::to_string(positions.size())
+               + " particles; give one per particle or none.");
+    }
+  } // namespace fbm
+} // namespace particulate

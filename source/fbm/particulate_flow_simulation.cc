@@ -1,0 +1,488 @@
+#include <particulate/core/mesh.h>
+#include <particulate/core/progress_reporter.h>
+#include <particulate/core/time_series_writer.h>
+#include <particulate/fbm/fictitious_boundary.h>
+#include <particulate/fbm/hydrodynamic_forces.h>
+#include <particulate/fbm/particulate_flow_simulation.h>
+#include <particulate/fluid/flow_diagnostics.h>
+#include <particulate/fluid/flow_output.h>
+#include <particulate/fluid/navier_stokes.h>
+#include <particulate/rigid/cylinder.h>
+#include <particulate/rigid/half_space.h>
+#include <particulate/rigid/sphere.h>
+#include <particulate/rigid/vtp_writer.h>
+#include <particulate/rigid/world.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fbm {
+    using namespace dealii;
+
+    namespace {
+      /** Lower and upper corner of the whole mesh (all ranks). */
+      template <int dim>
+      std::pair<Eigen::Vector3d, Eigen::Vector3d>
+      mesh_box(const Triangulation<dim> &tria, MPI_Comm comm)
+      {
+        std::vector<double> lower(3, std::numeric_limits<double>::max()),
+          upper(3, -std::numeric_limits<double>::max());
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto v : cell->vertex_indices())
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  lower[d] = std::min(lower[d], cell->vertex(v)[d]);
+                  upper[d] = std::max(upper[d], cell->vertex(v)[d]);
+                }
+        Utilities::MPI::min(lower, comm, lower);
+        Utilities::MPI::max(upper, comm, upper);
+        Eigen::Vector3d lo = Eigen::Vector3d::Zero(),
+                        up = Eigen::Vector3d::Zero();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = lower[d];
+            up[d] = upper[d];
+          }
+        return {lo, up};
+      }
+
+      /** The particle's volume as the engine sees it (per unit depth in
+       *  2D: a cylinder of length 1). */
+      double
+      particle_volume(const ParticleParameters &p)
+      {
+        return p.shape == ParticleParameters::Shape::disk ?
+                 M_PI * p.radius * p.radius :
+                 4. / 3. * M_PI * std::pow(p.radius, 3);
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    ParticulateFlowSimulation<dim>::ParticulateFlowSimulation(
+      const ParticulateFlowParameters &parameters,
+      const std::string               &parameter_file,
+      MPI_Comm                         comm)
+      : parameters(parameters)
+      , parameter_file(parameter_file)
+      , communicator(comm)
+    {}
+
+
+
+    template <int dim>
+    ParticulateFlowSummary
+    ParticulateFlowSimulation<dim>::run()
+    {
+      ConditionalOStream pcout(std::cout,
+                               Utilities::MPI::this_mpi_process(communicator)
+                                 == 0);
+      TimerOutput        timer(communicator,
+                        pcout,
+                        TimerOutput::never,
+                        TimerOutput::wall_times);
+      const auto &flow_p     = parameters.flow;
+      const auto &particle_p = parameters.particles;
+      const auto &time_p     = flow_p.time;
+      if (time_p.scheme == core::TimeParameters::Scheme::steady
+          && particle_p.motion == ParticleParameters::Motion::free)
+        throw std::runtime_error(
+          parameter_file
+          + ": free particles need a time-dependent scheme: set 'Scheme' in "
+            "subsection 'Time' to 'fractional-step theta' (or set 'Motion = "
+            "fixed' in subsection 'Particles').");
+      if (particle_p.n_particles() == 0)
+        throw std::runtime_error(
+          parameter_file
+          + ": a 'particulate flow' run needs at least one particle: set "
+            "'Positions' in subsection 'Particles'.");
+
+      parallel::fullydistributed::Triangulation<dim> tria(communicator);
+      {
+        TimerOutput::Scope scope(timer, "mesh");
+        core::create_mesh(flow_p.mesh, tria);
+      }
+      flow_p.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
+                                             parameter_file);
+      const auto [box_lower, box_upper] = mesh_box(tria, communicator);
+      for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (particle_p.positions[i][d] < box_lower[d]
+              || particle_p.positions[i][d] > box_upper[d])
+            throw std::runtime_error(
+              parameter_file + ": subsection 'Particles', entry 'Positions': "
+              + "particle " + std::to_string(i)
+              + " lies outside the mesh's bounding box.");
+
+      fluid::NavierStokes<dim> flow(flow_p.fluid, tria, timer);
+      flow.setup_dofs();
+      flow.set_initial_condition(0.);
+
+      // --- rigid bodies ------------------------------------------------
+      const double rho_f = flow_p.fluid.properties.density;
+      const double rho_p = particle_p.density;
+      const bool   free  = particle_p.motion == ParticleParameters::Motion::free;
+      const double volume = particle_volume(particle_p);
+      // Added-mass correction: the engine integrates the particle with mass
+      // m + m_a (density rho_p + C rho_f); the force gets + m_a a_old.
+      const double rho_engine = rho_p + particle_p.added_mass_coefficient * rho_f;
+
+      rigid::WorldParameters world_p;
+      world_p.gravity = Eigen::Vector3d::Zero(); // applied as (dM) g below
+      world_p.contact_solver
+        = rigid::contact_solver_type_from_string(particle_p.contact_solver);
+      world_p.substeps = particle_p.substeps;
+      rigid::World    world(world_p);
+      rigid::Material material;
+      material.name            = "particle";
+      material.density         = rho_engine;
+      material.restitution     = particle_p.restitution;
+      material.static_friction = material.dynamic_friction
+        = particle_p.friction;
+      const unsigned int particle_material = world.add_material(material);
+      rigid::Material    wall_material     = material;
+      wall_material.name                   = "wall";
+      const unsigned int wall_material_id = world.add_material(wall_material);
+
+      std::shared_ptr<const rigid::Shape> shape;
+      if (particle_p.shape == ParticleParameters::Shape::disk)
+        shape = std::make_shared<rigid::Cylinder>(particle_p.radius, 0.5);
+      else
+        shape = std::make_shared<rigid::Sphere>(particle_p.radius);
+      std::vector<rigid::BodyId> ids;
+      for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
+        {
+          ids.push_back(world.add_body(shape,
+                                       particle_material,
+                                       particle_p.positions[i],
+                                       Eigen::Quaterniond::Identity(),
+                                       !free));
+          if (free && !particle_p.velocities.empty())
+            world.body(ids.back()).linear_velocity = particle_p.velocities[i];
+        }
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          Eigen::Vector3d n = Eigen::Vector3d::Zero();
+          n[d]              = 1.;
+          // half-space {n.p <= offset}; n points into the fluid
+          if (particle_p.walls[2 * d])
+            world.add_body(std::make_shared<rigid::HalfSpace>(n, box_lower[d]),
+                           wall_material_id,
+                           Eigen::Vector3d::Zero(),
+                           Eigen::Quaterniond::Identity(),
+                           true);
+          if (particle_p.walls[2 * d + 1])
+            world.add_body(std::make_shared<rigid::HalfSpace>(-n,
+                                                              -box_upper[d]),
+                           wall_material_id,
+                           Eigen::Vector3d::Zero(),
+                           Eigen::Quaterniond::Identity(),
+                           true);
+        }
+
+      FictitiousBoundary<dim> interface(flow);
+      interface.setup();
+      std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
+      for (const auto id : ids)
+        interface_bodies.push_back({&world.body(id), particle_p.radius});
+
+      pcout << "Mesh: " << tria.n_global_active_cells() << " cells, "
+            << flow.n_dofs() << " DoFs (" << flow.n_velocity_dofs()
+            << " velocity + " << flow.n_dofs() - flow.n_velocity_dofs()
+            << " pressure) on " << Utilities::MPI::n_mpi_processes(communicator)
+            << " rank(s); " << particle_p.n_particles() << " particle(s)"
+            << std::endl;
+
+      // --- output --------------------------------------------------------
+      const std::string &dir = flow_p.output.directory;
+      std::vector<std::unique_ptr<core::TimeSeriesWriter>> particle_series;
+      for (unsigned int i = 0; i < ids.size(); ++i)
+        particle_series.push_back(std::make_unique<core::TimeSeriesWriter>(
+          dir + "/particle_" + std::to_string(i) + ".dat",
+          std::vector<std::string>{
+            "time",       "x",          "y",          "z",
+            "u",          "v",          "w",          "omega_x",
+            "omega_y",    "omega_z",    "F_x",        "F_y",
+            "F_z",        "T_x",        "T_y",        "T_z",
+            "Fc_x",       "Fc_y",       "Fc_z",       "kinetic_energy",
+            "nodes_inside"},
+          communicator));
+      core::TimeSeriesWriter flow_series(dir + "/flow.dat",
+                                         {"time",
+                                          "fluid_kinetic_energy",
+                                          "particle_kinetic_energy",
+                                          "nonlinear_iterations",
+                                          "linear_iterations",
+                                          "time_step"},
+                                         communicator);
+      fluid::FlowOutput<dim> flow_output(dir, "flow");
+      const bool             root
+        = Utilities::MPI::this_mpi_process(communicator) == 0;
+      rigid::VtpWriter body_output(dir + "/particles");
+
+      // --- state ---------------------------------------------------------
+      const unsigned int           n = ids.size();
+      std::vector<Eigen::Vector3d> acceleration(n, Eigen::Vector3d::Zero()),
+        angular_acceleration(n, Eigen::Vector3d::Zero());
+      std::vector<HydrodynamicLoad> loads(n);
+      ParticulateFlowSummary        summary;
+      summary.n_dofs = flow.n_dofs();
+      summary.max_speed.assign(n, 0.);
+      summary.time_of_max_speed.assign(n, 0.);
+
+      const auto true_inertia_world = [&](const rigid::RigidBody &b) {
+        return Eigen::Matrix3d(b.inertia_world() * (rho_p / rho_engine));
+      };
+      const auto particle_energy = [&](const rigid::RigidBody &b) {
+        return 0.5 * rho_p * volume * b.linear_velocity.squaredNorm()
+               + 0.5 * b.angular_velocity.dot(true_inertia_world(b)
+                                              * b.angular_velocity);
+      };
+
+      const auto record = [&](const double                  t,
+                              const double                  dt,
+                              const fluid::SolveStatistics &stats) {
+        TimerOutput::Scope scope(timer, "diagnostics");
+        double             particles_energy = 0.;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const rigid::RigidBody &b = world.body(ids[i]);
+            Eigen::Vector3d         contact = Eigen::Vector3d::Zero();
+            if (t > 0.)
+              for (const auto &f : world.contact_forces(ids[i]))
+                contact += f.force;
+            const double e = particle_energy(b);
+            particles_energy += e;
+            std::vector<double> row{t};
+            const std::array<const Eigen::Vector3d *, 6> columns{
+              {&b.position,
+               &b.linear_velocity,
+               &b.angular_velocity,
+               &loads[i].force,
+               &loads[i].torque,
+               &contact}};
+            for (const Eigen::Vector3d *v : columns)
+              for (unsigned int d = 0; d < 3; ++d)
+                row.push_back((*v)[d]);
+            row.push_back(e);
+            row.push_back(double(interface.n_nodes_inside(i)));
+            particle_series[i]->write_row(row);
+            if (b.linear_velocity.norm() > summary.max_speed[i])
+              {
+                summary.max_speed[i]         = b.linear_velocity.norm();
+                summary.time_of_max_speed[i] = t;
+              }
+          }
+        flow_series.write_row({t,
+                               fluid::kinetic_energy(flow),
+                               particles_energy,
+                               double(stats.nonlinear_iterations),
+                               double(stats.linear_iterations),
+                               dt});
+      };
+      const auto write_fields = [&](const unsigned int step, const double t) {
+        if (!flow_p.output.write_vtu)
+          return;
+        TimerOutput::Scope scope(timer, "output");
+        flow_output.write(flow, step, t);
+        if (root)
+          body_output.write(world);
+      };
+      const auto impose_particle_velocities = [&]() {
+        TimerOutput::Scope scope(timer, "fbm: containment and constraints");
+        interface.classify(interface_bodies);
+        flow.set_fictitious_boundary_values(
+          interface.constraint_values(interface_bodies));
+        flow.set_decoupled_pressure_dofs(interface.covered_pressure_dofs());
+      };
+
+      double       t    = 0.;
+      double       dt   = time_p.time_step;
+      unsigned int step = 0;
+      core::ProgressReporter progress(pcout.get_stream(),
+                                      0.,
+                                      time_p.scheme
+                                          == core::TimeParameters::Scheme::steady ?
+                                        1. :
+                                        time_p.end_time);
+      const auto counts = [&](const fluid::SolveStatistics &s) {
+        char buffer[160];
+        const Eigen::Vector3d &u = world.body(ids[0]).linear_velocity;
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      "nonlinear %2u%s linear %4u  |U_0| %.5g m/s",
+                      s.nonlinear_iterations,
+                      s.used_fixed_point ? "*" : " ",
+                      s.linear_iterations,
+                      u.norm());
+        return std::string(buffer);
+      };
+
+      impose_particle_velocities();
+      record(0., dt, fluid::SolveStatistics());
+      write_fields(0, 0.);
+
+      if (time_p.scheme == core::TimeParameters::Scheme::steady)
+        {
+          // fixed obstacles in steady flow: one nonlinear solve
+          const auto stats
+            = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
+          {
+            TimerOutput::Scope scope(timer, "fbm: forces");
+            std::vector<Eigen::Vector3d> centres;
+            for (const auto id : ids)
+              centres.push_back(world.body(id).position);
+            loads = hydrodynamic_loads(flow, interface, centres);
+          }
+          step = 1;
+          record(0., 0., stats);
+          write_fields(1, 0.);
+          if (pcout.is_active())
+            progress.report(1, 1., 0., counts(stats));
+        }
+      else
+        {
+          const double eps = 1e-12 * std::max(1., time_p.end_time);
+          while (t < time_p.end_time - eps)
+            {
+              dt = std::min(dt, time_p.end_time - t);
+              // 1.-2. fluid with the particles' velocities at t_n
+              const fluid::SolveStatistics stats
+                = flow.advance(t, dt, time_p.scheme);
+              // 3. loads from the new flow field, with the interface at t_n
+              std::vector<Eigen::Vector3d> centres;
+              for (const auto id : ids)
+                centres.push_back(world.body(id).position);
+              {
+                TimerOutput::Scope scope(timer, "fbm: forces");
+                loads = hydrodynamic_loads(flow, interface, centres);
+              }
+              // 4. rigid bodies
+              {
+                TimerOutput::Scope scope(timer, "rigid bodies");
+                std::vector<Eigen::Vector3d> old_velocity(n),
+                  old_angular_velocity(n), old_position(n);
+                std::vector<Eigen::Quaterniond> old_orientation(n);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    rigid::RigidBody &b = world.body(ids[i]);
+                    old_velocity[i]     = b.linear_velocity;
+                    old_angular_velocity[i] = b.angular_velocity;
+                    old_position[i]         = b.position;
+                    old_orientation[i]      = b.orientation;
+                    if (!free)
+                      continue;
+                    const double    m_true = rho_p * volume;
+                    const double    m_a    = b.mass() - m_true;
+                    Eigen::Vector3d force
+                      = loads[i].force
+                        + (rho_p - rho_f) * volume * particle_p.gravity
+                        + m_a * acceleration[i];
+                    const Eigen::Matrix3d I_a
+                      = b.inertia_world() - true_inertia_world(b);
+                    Eigen::Vector3d torque
+                      = loads[i].torque + I_a * angular_acceleration[i];
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        if (particle_p.locked_translation[d])
+                          force[d] = 0.;
+                        if (particle_p.locked_rotation[d])
+                          torque[d] = 0.;
+                      }
+                    world.set_external_force_and_torque(ids[i], force, torque);
+                  }
+                world.step(dt);
+                for (unsigned int i = 0; i < n && free; ++i)
+                  {
+                    rigid::RigidBody &b = world.body(ids[i]);
+                    // symmetry and planar motion: undo what contacts or
+                    // rounding did along the locked axes
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        if (particle_p.locked_translation[d])
+                          {
+                            b.linear_velocity[d] = 0.;
+                            b.position[d]        = old_position[i][d];
+                          }
+                        if (particle_p.locked_rotation[d])
+                          b.angular_velocity[d] = 0.;
+                      }
+                    if (particle_p.locked_rotation[0]
+                        && particle_p.locked_rotation[1]
+                        && particle_p.locked_rotation[2])
+                      b.orientation = old_orientation[i];
+                    if (!b.linear_velocity.allFinite()
+                        || !b.position.allFinite())
+                      throw std::runtime_error(
+                        "Particle " + std::to_string(i)
+                        + " has a non-finite velocity at t = "
+                        + std::to_string(t + dt)
+                        + " s: the coupling diverged. Reduce 'Time step' in "
+                          "subsection 'Time' or raise 'Added mass "
+                          "coefficient' in subsection 'Particles'.");
+                    acceleration[i] = (b.linear_velocity - old_velocity[i]) / dt;
+                    angular_acceleration[i]
+                      = (b.angular_velocity - old_angular_velocity[i]) / dt;
+                  }
+              }
+              t += dt;
+              ++step;
+              // 1. (next step) the interface at t_n+1
+              impose_particle_velocities();
+              record(t, dt, stats);
+              const bool last = t >= time_p.end_time - eps;
+              if ((flow_p.output.interval > 0
+                   && step % flow_p.output.interval == 0)
+                  || last)
+                write_fields(step, t);
+              if (pcout.is_active())
+                progress.report(step, t, dt, counts(stats));
+              if (time_p.adaptive)
+                {
+                  const double cfl      = flow.cfl_number(dt);
+                  const double proposal = cfl > 0. ?
+                                            dt * time_p.cfl_target / cfl :
+                                            1.2 * dt;
+                  dt = std::clamp(std::clamp(proposal, 0.8 * dt, 1.2 * dt),
+                                  time_p.minimum_time_step,
+                                  time_p.maximum_time_step);
+                }
+            }
+        }
+
+      summary.n_steps      = step;
+      summary.end_time     = t;
+      summary.wall_seconds = progress.elapsed_seconds();
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const rigid::RigidBody &b = world.body(ids[i]);
+          summary.position.push_back(b.position);
+          summary.velocity.push_back(b.linear_velocity);
+          summary.force.push_back(loads[i].force);
+          summary.torque.push_back(loads[i].torque);
+        }
+      pcout << "\nFinal: particle 0 at (" << summary.position[0].transpose()
+            << ") m, velocity (" << summary.velocity[0].transpose()
+            << ") m/s, fluid force (" << summary.force[0].transpose()
+            << ") N\nResults are in " << dir
+            << "/ (flow.pvd, particles.pvd, particle_*.dat, flow.dat)"
+            << std::endl;
+      timer.print_wall_time_statistics(communicator);
+      return summary;
+    }
+
+    template class ParticulateFlowSimulation<2>;
+    template class ParticulateFlowSimulation<3>;
+  } // namespace fbm
+} // namespace particulate
