@@ -46,28 +46,7 @@ namespace {
   {
     core::parse_input_file(prm, filename);
     fbm::ParticulateFlowParameters all;
-    fluid::FlowCaseParameters     &parameters = all.flow;
-    parameters.parse(prm);
-    parameters.mesh.base_directory
-      = std::filesystem::path(filename).parent_path().string();
-    if (parameters.mesh.base_directory.empty())
-      parameters.mesh.base_directory = ".";
-    try
-      {
-        all.particles.parse(prm, parameters.simulation.dimension);
-      }
-    catch (const std::runtime_error &e)
-      {
-        throw std::runtime_error(filename + ": " + e.what());
-      }
-    // never ignore input silently
-    if (parameters.simulation.type == core::SimulationParameters::Type::fluid
-        && all.particles.n_particles() > 0)
-      throw std::runtime_error(
-        filename
-        + ": subsection 'Particles' sets 'Positions', but 'Type' in "
-          "subsection 'Simulation' is 'fluid', which has no particles. Set "
-          "'Type = particulate flow'.");
+    all.parse(prm, filename);
     return all;
   }
 
@@ -128,8 +107,7 @@ main(int argc, char **argv)
   try
     {
       dealii::ParameterHandler prm;
-      fluid::FlowCaseParameters::declare(prm);
-      fbm::ParticleParameters::declare(prm);
+      fbm::ParticulateFlowParameters::declare(prm);
 
       if (args.empty() || args[0] == "--help" || args[0] == "-h")
         {

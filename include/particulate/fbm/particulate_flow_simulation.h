@@ -18,7 +18,25 @@ namespace particulate {
     {
       fluid::FlowCaseParameters flow;
       ParticleParameters        particles;
+
+      /** Declare every entry a case file may set. */
+      static void
+      declare(dealii::ParameterHandler &prm);
+
+      /** Read the entries of the already parsed @p prm; @p filename names
+       *  the case in messages and locates its mesh files. */
+      void
+      parse(dealii::ParameterHandler &prm, const std::string &filename);
     };
+
+    /**
+     * Read the case file @p filename, then apply @p overrides (.prm text,
+     * e.g. "subsection Mesh\n set Refinements = 3\nend\n"): how tests and
+     * studies vary a library case without copying it.
+     */
+    ParticulateFlowParameters
+    read_particulate_flow_case(const std::string &filename,
+                               const std::string &overrides = "");
 
     /** What a run measured; used by tests and the final summary. */
     struct ParticulateFlowSummary

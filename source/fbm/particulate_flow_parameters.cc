@@ -1,0 +1,68 @@
+#include <particulate/core/input_file.h>
+#include <particulate/fbm/particulate_flow_simulation.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fbm {
+    void
+    ParticulateFlowParameters::declare(dealii::ParameterHandler &prm)
+    {
+      fluid::FlowCaseParameters::declare(prm);
+      ParticleParameters::declare(prm);
+    }
+
+
+
+    void
+    ParticulateFlowParameters::parse(dealii::ParameterHandler &prm,
+                                     const std::string        &filename)
+    {
+      flow.parse(prm);
+      // meshes named in the file are found next to it
+      flow.mesh.base_directory
+        = std::filesystem::path(filename).parent_path().string();
+      if (flow.mesh.base_directory.empty())
+        flow.mesh.base_directory = ".";
+      try
+        {
+          particles.parse(prm, flow.simulation.dimension);
+        }
+      catch (const std::runtime_error &e)
+        {
+          throw std::runtime_error(filename + ": " + e.what());
+        }
+      // never ignore input silently
+      if (flow.simulation.type == core::SimulationParameters::Type::fluid
+          && particles.n_particles() > 0)
+        throw std::runtime_error(
+          filename
+          + ": subsection 'Particles' sets 'Positions', but 'Type' in "
+            "subsection 'Simulation' is 'fluid', which has no particles. Set "
+            "'Type = particulate flow'.");
+    }
+
+
+
+    ParticulateFlowParameters
+    read_particulate_flow_case(const std::string &filename,
+                               const std::string &overrides)
+    {
+      dealii::ParameterHandler prm;
+      ParticulateFlowParameters::declare(prm);
+      core::parse_input_file(prm, filename);
+      if (!overrides.empty())
+        {
+          std::istringstream stream(overrides);
+          prm.parse_input(stream, filename + " (overrides)");
+        }
+      ParticulateFlowParameters parameters;
+      parameters.parse(prm, filename);
+      return parameters;
+    }
+  } // namespace fbm
+} // namespace particulate

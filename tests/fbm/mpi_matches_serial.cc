@@ -1,0 +1,81 @@
+// The distributed coupled solver reproduces the serial one: a disk settling
+// in a closed box (prm/settling-disk, coarse mesh, 15 steps, thrown sideways
+// and down at 2 cm/s so that it moves 0.3 mm, half a node spacing, and the
+// set of constrained nodes changes) on all ranks of
+// MPI_COMM_WORLD and on rank 0 alone. Velocity, position and fluid force of
+// the disk agree to the solver tolerances (the partitioning changes the AMG,
+// so agreement is not to round-off). This checks that the constraints inside
+// the body, the decoupled pressures and the force integrals are consistent
+// across ranks, also for cells on partition boundaries.
+
+#include <particulate/fbm/particulate_flow_simulation.h>
+
+#include "../fluid/test_utilities.h"
+
+using namespace particulate;
+
+namespace {
+  fbm::ParticulateFlowSummary
+  run(MPI_Comm comm, const std::string &output)
+  {
+    auto parameters = fbm::read_particulate_flow_case(
+      testing::source_path("prm/settling-disk/settling-disk.prm"),
+      "subsection Mesh\n set Refinements = 4\nend\n"
+      "subsection Time\n set End time = 0.015\nend\n"
+      "subsection Particles\n set Velocities = 0.02, -0.02\nend\n"
+      "subsection Nonlinear solver\n set Absolute tolerance = 1e-14\n"
+      " set Relative tolerance = 1e-10\nend\n"
+      "subsection Linear solver\n set Relative tolerance = 1e-8\n"
+      " set Pressure Poisson tolerance = 1e-8\nend\n");
+    parameters.flow.output.directory = output;
+    parameters.flow.output.write_vtu = false;
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      std::filesystem::create_directories(output);
+    MPI_Barrier(comm);
+    fbm::ParticulateFlowSimulation<2> simulation(parameters,
+                                                 "settling-disk.prm",
+                                                 comm);
+    return simulation.run();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  testing::Checker                         checker;
+  const unsigned int                       rank
+    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const unsigned int n_ranks
+    = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  checker.check(n_ranks > 1, "runs on more than one rank");
+
+  const auto parallel = run(MPI_COMM_WORLD, "settling_disk_parallel");
+  fbm::ParticulateFlowSummary serial;
+  if (rank == 0)
+    {
+      serial = run(MPI_COMM_SELF, "settling_disk_serial");
+      const std::string ranks = " on " + std::to_string(n_ranks) + " ranks";
+      checker.check(parallel.n_steps == serial.n_steps && serial.n_steps == 15,
+                    "same number of steps (15)");
+      checker.check_relative(parallel.velocity[0][0],
+                             serial.velocity[0][0],
+                             1e-7,
+                             "horizontal velocity" + ranks);
+      checker.check_relative(parallel.velocity[0][1],
+                             serial.velocity[0][1],
+                             1e-7,
+                             "settling velocity" + ranks);
+      checker.check_relative(parallel.position[0][1] - 0.03,
+                             serial.position[0][1] - 0.03,
+                             1e-7,
+                             "distance fallen" + ranks);
+      checker.check_relative(parallel.force[0][1],
+                             serial.force[0][1],
+                             1e-6,
+                             "vertical fluid force" + ranks);
+    }
+  int code = checker.exit_code();
+  MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return code;
+}
