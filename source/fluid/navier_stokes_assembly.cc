@@ -6,6 +6,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+#include <array>
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
@@ -67,10 +70,40 @@ namespace particulate {
       std::vector<Vector<double>> f_new(n_q, Vector<double>(dim)),
         f_old(n_q, Vector<double>(dim));
 
-      std::vector<Tensor<1, dim>>          phi_u(dofs_per_cell);
-      std::vector<Tensor<2, dim>>          grad_phi_u(dofs_per_cell);
-      std::vector<SymmetricTensor<2, dim>> sym_grad_phi_u(dofs_per_cell);
-      std::vector<double> div_phi_u(dofs_per_cell), phi_p(dofs_per_cell);
+      // The velocity space is Q2^dim: every velocity shape function is a
+      // scalar Q2 function phi_a times a unit vector e_c. The kernel works
+      // on the n_s scalar functions and fills the dim x dim blocks of the
+      // cell matrix from them, which costs ~(n_s/dofs_per_cell)^2 of the
+      // generic vector-valued loop (15x fewer operations in 3D).
+      const unsigned int n_s = fe.base_element(0).n_dofs_per_cell();
+      const unsigned int n_p = fe.base_element(1).n_dofs_per_cell();
+      std::vector<std::array<unsigned int, dim>> velocity_index(n_s);
+      std::vector<unsigned int>                  pressure_index(n_p);
+      std::vector<unsigned int>                  scalar_representative(n_s);
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const auto [component, index] = fe.system_to_component_index(i);
+          if (component < dim)
+            {
+              velocity_index[index][component] = i;
+              if (component == 0)
+                scalar_representative[index] = i;
+            }
+          else
+            pressure_index[index] = i;
+        }
+      std::vector<double>         phi(n_s), advect_phi(n_s), psi(n_p);
+      std::vector<Tensor<1, dim>> grad_phi(n_s);
+      // the local matrix by blocks: (c, d) velocity components
+      std::vector<double> block_uu(dim * dim * n_s * n_s);
+      const auto          uu = [&](unsigned int c,
+                          unsigned int d,
+                          unsigned int a,
+                          unsigned int b) -> double & {
+        return block_uu[((c * dim + d) * n_s + a) * n_s + b];
+      };
+      // B: (pressure k, component d, scalar b) -> -(psi_k, d_d phi_b)
+      std::vector<double> block_pu(n_p * dim * n_s);
 
       const bool has_body_force
         = dynamic_cast<const Functions::ZeroFunction<dim> *>(body_force.get())
@@ -80,8 +113,12 @@ namespace particulate {
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            cell_matrix = 0;
-            cell_rhs    = 0;
+            cell_rhs = 0;
+            if (assemble_matrix)
+              {
+                std::fill(block_uu.begin(), block_uu.end(), 0.);
+                std::fill(block_pu.begin(), block_pu.end(), 0.);
+              }
 
             fe_values[velocities].get_function_values(solution, u);
             fe_values[velocities].get_function_gradients(solution, grad_u);
@@ -108,14 +145,14 @@ namespace particulate {
             for (unsigned int q = 0; q < n_q; ++q)
               {
                 const double JxW = fe_values.JxW(q);
-                for (unsigned int k = 0; k < dofs_per_cell; ++k)
+                for (unsigned int a = 0; a < n_s; ++a)
                   {
-                    phi_u[k]          = fe_values[velocities].value(k, q);
-                    grad_phi_u[k]     = fe_values[velocities].gradient(k, q);
-                    sym_grad_phi_u[k] = symmetrize(grad_phi_u[k]);
-                    div_phi_u[k]      = trace(grad_phi_u[k]);
-                    phi_p[k]          = fe_values[pressure].value(k, q);
+                    phi[a] = fe_values.shape_value(scalar_representative[a], q);
+                    grad_phi[a]
+                      = fe_values.shape_grad(scalar_representative[a], q);
                   }
+                for (unsigned int k = 0; k < n_p; ++k)
+                  psi[k] = fe_values.shape_value(pressure_index[k], q);
 
                 const SymmetricTensor<2, dim> D  = symmetrize(grad_u[q]);
                 const double                  mu = viscosity_model->viscosity(
@@ -149,31 +186,78 @@ namespace particulate {
                     vector_part[d]
                       -= rho * (ti * f_new[q][d] + te * f_old[q][d]);
 
-                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                // right-hand side -R: (a, v) + (S, D(v)) - (p, div v) for
+                // v = phi_a e_c, and -(div u, q) for q = psi_k
+                for (unsigned int a = 0; a < n_s; ++a)
                   {
-                    cell_rhs(i) -= (vector_part * phi_u[i]
-                                    + tensor_part * sym_grad_phi_u[i]
-                                    - p[q] * div_phi_u[i] - div_u[q] * phi_p[i])
-                                   * JxW;
-                    if (assemble_matrix)
-                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                        {
-                          double value
-                            = mass_coeff * (phi_u[j] * phi_u[i])
-                              + ti
-                                  * (2. * mu
-                                       * (sym_grad_phi_u[j] * sym_grad_phi_u[i])
-                                     + rho
-                                         * ((grad_phi_u[j] * advecting)
-                                            * phi_u[i]))
-                              - phi_p[j] * div_phi_u[i]
-                              - div_phi_u[j] * phi_p[i];
-                          if (newton)
-                            value
-                              += ti * rho * ((grad_u[q] * phi_u[j]) * phi_u[i]);
-                          cell_matrix(i, j) += value * JxW;
-                        }
+                    const Tensor<1, dim> S_grad = tensor_part * grad_phi[a];
+                    for (unsigned int c = 0; c < dim; ++c)
+                      cell_rhs(velocity_index[a][c])
+                        -= (vector_part[c] * phi[a] + S_grad[c]
+                            - p[q] * grad_phi[a][c])
+                           * JxW;
                   }
+                for (unsigned int k = 0; k < n_p; ++k)
+                  cell_rhs(pressure_index[k]) += div_u[q] * psi[k] * JxW;
+
+                if (!assemble_matrix)
+                  continue;
+                // Jacobian, for trial phi_b e_d and test phi_a e_c:
+                //   delta_cd [rho/k phi_a phi_b + ti mu grad phi_a.grad phi_b
+                //             + ti rho phi_a (advecting.grad phi_b)]
+                //   + ti mu d_d phi_a d_c phi_b   (the transpose in D(u))
+                //   + ti rho d_d u_c phi_a phi_b  (Newton only)
+                const double viscous = ti * mu * JxW;
+                const double newton_weight = newton ? ti * rho * JxW : 0.;
+                for (unsigned int b = 0; b < n_s; ++b)
+                  advect_phi[b] = ti * rho * (advecting * grad_phi[b]) * JxW;
+                for (unsigned int a = 0; a < n_s; ++a)
+                  {
+                    const double mass_a = mass_coeff * phi[a] * JxW;
+                    for (unsigned int b = 0; b < n_s; ++b)
+                      {
+                        const double diagonal
+                          = mass_a * phi[b]
+                            + viscous * (grad_phi[a] * grad_phi[b])
+                            + phi[a] * advect_phi[b];
+                        const double phi_ab = newton_weight * phi[a] * phi[b];
+                        for (unsigned int c = 0; c < dim; ++c)
+                          {
+                            for (unsigned int d = 0; d < dim; ++d)
+                              uu(c, d, a, b)
+                                += viscous * grad_phi[a][d] * grad_phi[b][c]
+                                   + phi_ab * grad_u[q][c][d];
+                            uu(c, c, a, b) += diagonal;
+                          }
+                      }
+                  }
+                for (unsigned int k = 0; k < n_p; ++k)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    for (unsigned int b = 0; b < n_s; ++b)
+                      block_pu[(k * dim + d) * n_s + b]
+                        -= psi[k] * grad_phi[b][d] * JxW;
+              }
+
+            if (assemble_matrix)
+              {
+                cell_matrix = 0;
+                for (unsigned int c = 0; c < dim; ++c)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    for (unsigned int a = 0; a < n_s; ++a)
+                      for (unsigned int b = 0; b < n_s; ++b)
+                        cell_matrix(velocity_index[a][c], velocity_index[b][d])
+                          = uu(c, d, a, b);
+                // B (continuity rows) and B^T (pressure gradient columns)
+                for (unsigned int k = 0; k < n_p; ++k)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    for (unsigned int b = 0; b < n_s; ++b)
+                      {
+                        const double value = block_pu[(k * dim + d) * n_s + b];
+                        cell_matrix(pressure_index[k], velocity_index[b][d])
+                          = value;
+                        cell_matrix(velocity_index[b][d], pressure_index[k])
+                          = value;
+                      }
               }
 
             cell->get_dof_indices(dof_indices);
