@@ -125,5 +125,23 @@ namespace particulate {
     hydrodynamic_loads(const fluid::NavierStokes<3> &,
                        const FictitiousBoundary<3> &,
                        const std::vector<Eigen::Vector3d> &);
+
+    void
+    add_mirror_images(std::vector<HydrodynamicLoad> &loads,
+                      const std::array<bool, 6>     &mirror_planes)
+    {
+      for (unsigned int f = 0; f < 6; ++f)
+        if (mirror_planes[f])
+          for (auto &load : loads)
+            {
+              const unsigned int a       = f / 2;
+              Eigen::Vector3d    image_f = load.force;
+              image_f[a]                 = -image_f[a];
+              Eigen::Vector3d image_t    = -load.torque;
+              image_t[a]                 = load.torque[a];
+              load.force += image_f;
+              load.torque += image_t;
+            }
+    }
   } // namespace fbm
 } // namespace particulate

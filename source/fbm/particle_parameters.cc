@@ -129,6 +129,18 @@ namespace particulate {
                         Patterns::Anything(),
                         "World axes about which the particles may not "
                         "rotate. 2D runs lock x and y themselves.");
+      prm.declare_entry("Symmetry planes",
+                        "none",
+                        Patterns::Anything(),
+                        "Faces of the mesh's bounding box (list of x-, x+, "
+                        "y-, y+, z-, z+, or 'none') that are mirror planes "
+                        "of a symmetric set-up, e.g. 'x-, y-' for a quarter "
+                        "domain. The particles' centres must lie on them and "
+                        "their translation across them must be locked; the "
+                        "force, torque and fluid kinetic energy computed in "
+                        "the mesh are completed by the mirror images, so "
+                        "the output is that of the full set-up. Give these "
+                        "faces a free-slip condition.");
       prm.declare_entry("Added mass coefficient",
                         "1",
                         Patterns::Double(0.),
@@ -197,24 +209,30 @@ namespace particulate {
       contact_solver         = prm.get("Contact solver");
       restitution            = prm.get_double("Restitution");
       friction               = prm.get_double("Friction");
-      const std::string wall_text = Utilities::trim(prm.get("Domain walls"));
-      walls.fill(wall_text == "all");
-      if (wall_text != "all" && wall_text != "none")
-        {
-          const std::array<std::string, 6> names{
-            {"x-", "x+", "y-", "y+", "z-", "z+"}};
-          for (const std::string &w :
-               Utilities::split_string_list(wall_text, ','))
-            {
-              const auto it = std::find(names.begin(), names.end(), w);
-              if (it == names.end())
-                fail("Domain walls",
-                     "'" + w
-                       + "' is not a face; write 'all', 'none' or a list "
-                         "of x-, x+, y-, y+, z-, z+.");
-              walls[it - names.begin()] = true;
-            }
-        }
+      const auto read_faces = [&](const std::string &entry) {
+        const std::string   text = Utilities::trim(prm.get(entry));
+        std::array<bool, 6> faces;
+        faces.fill(text == "all");
+        if (text != "all" && text != "none")
+          {
+            const std::array<std::string, 6> names{
+              {"x-", "x+", "y-", "y+", "z-", "z+"}};
+            for (const std::string &w : Utilities::split_string_list(text, ','))
+              {
+                const auto it = std::find(names.begin(), names.end(), w);
+                if (it == names.end() || int(it - names.begin()) >= 2 * int(dim))
+                  fail(entry,
+                       "'" + w
+                         + "' is not a face of this " + std::to_string(dim)
+                         + "D box; write 'all', 'none' or a list of x-, x+, "
+                           "y-, y+" + (dim == 3 ? ", z-, z+." : "."));
+                faces[it - names.begin()] = true;
+              }
+          }
+        return faces;
+      };
+      walls           = read_faces("Domain walls");
+      symmetry_planes = read_faces("Symmetry planes");
       substeps               = prm.get_integer("Rigid substeps");
       prm.leave_subsection();
 
@@ -227,6 +245,17 @@ namespace particulate {
       // a pure fluid run has no particles: nothing below concerns it
       if (positions.empty())
         return;
+      for (unsigned int f = 0; f < 6; ++f)
+        if (symmetry_planes[f] && !locked_translation[f / 2])
+          fail("Symmetry planes",
+               std::string("a particle on the mirror plane ") + "xyz"[f / 2]
+                 + (f % 2 ? "+" : "-") + " may not move across it: add '"
+                 + "xyz"[f / 2] + "' to 'Locked translations'.");
+        else if (symmetry_planes[f] && walls[f])
+          fail("Symmetry planes",
+               std::string("face ") + "xyz"[f / 2] + (f % 2 ? "+" : "-")
+                 + " is also listed in 'Domain walls'; a mirror plane is not "
+                   "a wall.");
       if (dim == 2 && shape != Shape::disk)
         fail("Shape", "a 2D run needs 'disk'.");
       if (dim == 3 && shape != Shape::sphere)

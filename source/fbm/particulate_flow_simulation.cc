@@ -124,6 +124,25 @@ namespace particulate {
               parameter_file + ": subsection 'Particles', entry 'Positions': "
               + "particle " + std::to_string(i)
               + " lies outside the mesh's bounding box.");
+      // mirror planes: the centres lie on them
+      unsigned int n_images = 1;
+      for (unsigned int f = 0; f < 2 * dim; ++f)
+        if (particle_p.symmetry_planes[f])
+          {
+            n_images *= 2;
+            const unsigned int a     = f / 2;
+            const double       plane = f % 2 ? box_upper[a] : box_lower[a];
+            for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
+              if (std::abs(particle_p.positions[i][a] - plane)
+                  > 1e-9 * (box_upper[a] - box_lower[a]))
+                throw std::runtime_error(
+                  parameter_file
+                  + ": subsection 'Particles', entry 'Symmetry planes': "
+                    "particle "
+                  + std::to_string(i) + " does not lie on the mirror plane "
+                  + "xyz"[a] + " = " + std::to_string(plane)
+                  + "; put its centre there or remove the plane.");
+          }
 
       fluid::NavierStokes<dim> flow(flow_p.fluid, tria, timer);
       flow.setup_dofs();
@@ -285,7 +304,7 @@ namespace particulate {
               }
           }
         flow_series.write_row({t,
-                               fluid::kinetic_energy(flow),
+                               n_images * fluid::kinetic_energy(flow),
                                particles_energy,
                                double(stats.nonlinear_iterations),
                                double(stats.linear_iterations),
@@ -344,6 +363,7 @@ namespace particulate {
             for (const auto id : ids)
               centres.push_back(world.body(id).position);
             loads = hydrodynamic_loads(flow, interface, centres);
+                add_mirror_images(loads, particle_p.symmetry_planes);
           }
           step = 1;
           record(0., 0., stats);
@@ -367,6 +387,7 @@ namespace particulate {
               {
                 TimerOutput::Scope scope(timer, "fbm: forces");
                 loads = hydrodynamic_loads(flow, interface, centres);
+                add_mirror_images(loads, particle_p.symmetry_planes);
               }
               // 4. rigid bodies
               {

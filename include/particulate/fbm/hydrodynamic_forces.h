@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 #include <vector>
 
 namespace particulate {
@@ -37,6 +39,17 @@ namespace particulate {
     hydrodynamic_loads(const fluid::NavierStokes<dim>      &flow,
                        const FictitiousBoundary<dim>       &interface,
                        const std::vector<Eigen::Vector3d> &centres);
+
+    /**
+     * Complete loads integrated over the part of a body inside a symmetric
+     * domain: for every mirror plane (normal to axis a; faces in the order
+     * x-, x+, y-, y+, z-, z+) add the reflected image, F + R_a F for the
+     * force and T - R_a T for the torque (a pseudo-vector), where R_a flips
+     * component a. The body's centre must lie on the planes.
+     */
+    void
+    add_mirror_images(std::vector<HydrodynamicLoad> &loads,
+                      const std::array<bool, 6>     &mirror_planes);
   } // namespace fbm
 } // namespace particulate
 

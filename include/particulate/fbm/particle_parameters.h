@@ -54,6 +54,12 @@ namespace particulate {
       /// the order x-, x+, y-, y+, z-, z+
       std::array<bool, 6> walls = {{true, true, true, true, true, true}};
       unsigned int substeps       = 1;
+      /// faces of the mesh's bounding box that are mirror planes of the
+      /// set-up (x-, x+, y-, y+, z-, z+): the particles lie on them, and the
+      /// loads integrated over the part of each body inside the mesh are
+      /// completed by their mirror images
+      std::array<bool, 6> symmetry_planes = {{false, false, false, false,
+                                              false, false}};
 
       static void
       declare(dealii::ParameterHandler &prm);
