@@ -47,8 +47,6 @@ namespace particulate {
       node_is_owned_cell_node.clear();
       cells.clear();
       nodes_of_cells.clear();
-      pressure_dofs_of_cells.clear();
-      pressure_dofs_per_cell = fe.base_element(1).n_dofs_per_cell();
       std::unordered_map<DofIndex, unsigned int> node_of_dof;
       std::vector<DofIndex> dof_indices(fe.n_dofs_per_cell());
       for (const auto &cell : flow.get_dof_handler().active_cell_iterators())
@@ -58,12 +56,7 @@ namespace particulate {
             cell->get_dof_indices(dof_indices);
             const bool owned = cell->is_locally_owned();
             if (owned)
-              {
-                cells.push_back(cell);
-                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                  if (fe.system_to_component_index(i).first == dim)
-                    pressure_dofs_of_cells.push_back(dof_indices[i]);
-              }
+              cells.push_back(cell);
             for (unsigned int k = 0; k < nodes_per_cell_; ++k)
               {
                 const DofIndex key = dof_indices[local_index[k][0]];
@@ -138,30 +131,6 @@ namespace particulate {
               values.emplace_back(node_dofs[i][c], u[c]);
           }
       return values;
-    }
-
-
-
-    template <int dim>
-    std::vector<typename FictitiousBoundary<dim>::DofIndex>
-    FictitiousBoundary<dim>::covered_pressure_dofs() const
-    {
-      std::vector<DofIndex> dofs;
-      for (unsigned int c = 0; c < cells.size(); ++c)
-        {
-          const unsigned int *nodes = cell_nodes(c);
-          const int           b     = node_body[nodes[0]];
-          bool                covered = b >= 0;
-          for (unsigned int k = 1; k < nodes_per_cell_ && covered; ++k)
-            covered = node_body[nodes[k]] == b;
-          if (covered)
-            dofs.insert(dofs.end(),
-                        pressure_dofs_of_cells.begin()
-                          + c * pressure_dofs_per_cell,
-                        pressure_dofs_of_cells.begin()
-                          + (c + 1) * pressure_dofs_per_cell);
-        }
-      return dofs;
     }
 
 

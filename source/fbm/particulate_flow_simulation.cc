@@ -323,7 +323,6 @@ namespace particulate {
         interface.classify(interface_bodies);
         flow.set_fictitious_boundary_values(
           interface.constraint_values(interface_bodies));
-        flow.set_decoupled_pressure_dofs(interface.covered_pressure_dofs());
       };
 
       double       t    = 0.;

@@ -190,6 +190,29 @@ namespace particulate {
               }
           c.close();
         }
+
+      // cells whose velocity is prescribed everywhere (see
+      // decoupled_pressure_dofs)
+      decoupled_pressure_dofs.clear();
+      if (!fictitious_boundary_values.empty())
+        {
+          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                cell->get_dof_indices(dofs);
+                bool all_constrained = true;
+                for (unsigned int i = 0;
+                     i < fe.n_dofs_per_cell() && all_constrained;
+                     ++i)
+                  if (fe.system_to_component_index(i).first < dim)
+                    all_constrained = zero_constraints.is_constrained(dofs[i]);
+                if (all_constrained)
+                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                    if (fe.system_to_component_index(i).first == dim)
+                      decoupled_pressure_dofs.push_back(dofs[i]);
+              }
+        }
     }
 
 
@@ -212,16 +235,6 @@ namespace particulate {
       if (Utilities::MPI::max(same_nodes ? 0 : 1, communicator) > 0)
         schur_approximation_is_current = false;
       fictitious_boundary_values = std::move(values);
-    }
-
-
-
-    template <int dim>
-    void
-    NavierStokes<dim>::set_decoupled_pressure_dofs(
-      std::vector<types::global_dof_index> dofs)
-    {
-      decoupled_pressure_dofs = std::move(dofs);
     }
 
 

@@ -61,12 +61,6 @@ namespace particulate {
       std::vector<std::pair<DofIndex, double>>
       constraint_values(const std::vector<Body> &bodies) const;
 
-      /** The locally owned pressure DoFs of the owned cells whose velocity
-       *  nodes all lie inside one body (see
-       *  fluid::NavierStokes::set_decoupled_pressure_dofs()). */
-      std::vector<DofIndex>
-      covered_pressure_dofs() const;
-
       /** Number of nodes (of locally owned cells, all ranks) inside body
        *  @p b: a measure of how well the mesh resolves it. */
       unsigned long
@@ -117,8 +111,6 @@ namespace particulate {
       std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator>
                                 cells;
       std::vector<unsigned int> nodes_of_cells;
-      std::vector<DofIndex>     pressure_dofs_of_cells;
-      unsigned int              pressure_dofs_per_cell = 0;
       unsigned int              nodes_per_cell_ = 0;
     };
   } // namespace fbm

@@ -131,18 +131,6 @@ namespace particulate {
         std::vector<std::pair<dealii::types::global_dof_index, double>>
           values);
 
-      /**
-       * Pressure DoFs (locally owned) of cells that lie entirely inside
-       * bodies. Every velocity test function they couple to is constrained,
-       * so the equations do not determine them; the solver sets them to
-       * zero after every Newton update so that they stay bounded (the
-       * Krylov method would otherwise let them drift, and they reappear in
-       * the equations when their cell is uncovered by a moving body).
-       */
-      void
-      set_decoupled_pressure_dofs(
-        std::vector<dealii::types::global_dof_index> dofs);
-
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void
       set_mesh_velocity(const BlockVector &mesh_velocity);
@@ -255,6 +243,12 @@ namespace particulate {
       /// velocity values imposed inside fictitious-boundary bodies
       std::vector<std::pair<dealii::types::global_dof_index, double>>
         fictitious_boundary_values;
+      /// Pressure DoFs (locally owned) of cells whose velocity DoFs are all
+      /// constrained (inside a fictitious-boundary body, or squeezed between
+      /// a body and a wall): every test function they couple to is
+      /// constrained, so no equation determines them, and with prescribed
+      /// velocities all round the cell's divergence equation would contradict
+      /// them. They are decoupled: kept at zero after every Newton update.
       std::vector<dealii::types::global_dof_index> decoupled_pressure_dofs;
 
       dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
