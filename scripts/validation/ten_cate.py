@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""ten Cate et al. (2002) sedimentation benchmark: compare runs of
+prm/ten-cate/ten-cate-e*.prm with the experiment and plot them.
+
+    scripts/validation/ten_cate.py output/ten-cate-e4 [output/ten-cate-e3 ...]
+        [--doc doc/validation]
+
+For each output folder (the case is read from its used_parameters.prm) it
+prints u_max, its time and its error against the experiment's maximum
+settling velocity (ten Cate's Table II), and writes into --doc:
+ten-cate-velocity.png (settling velocity), ten-cate-gap.png (gap height
+h/d_p), ten-cate-energy.png (particle and fluid kinetic energy) and
+ten-cate.dat (the table).
+"""
+import argparse
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+# experiment: fluid density [kg/m^3], dynamic viscosity [Pa s], u_max [m/s]
+EXPERIMENT = {
+    "E1": (970.0, 0.373, 0.035986),
+    "E2": (965.0, 0.212, 0.05718),
+    "E3": (962.0, 0.113, 0.087269),
+    "E4": (960.0, 0.058, 0.12224),
+}
+
+
+def read_series(path):
+    with open(path) as f:
+        names = f.readline()[1:].split()
+    return names, np.loadtxt(path, ndmin=2)
+
+
+def used_value(folder, entry):
+    with open(os.path.join(folder, "used_parameters.prm")) as f:
+        for line in f:
+            m = re.match(r"\s*set\s+" + re.escape(entry) + r"\s*=\s*(.*)", line)
+            if m:
+                return m.group(1).strip()
+    sys.exit(f"{folder}/used_parameters.prm: no entry '{entry}'")
+
+
+def identify(folder):
+    """The experiment a run reproduces, from its fluid properties."""
+    rho = float(used_value(folder, "Density"))
+    mu = float(used_value(folder, "Dynamic viscosity"))
+    for name, (rho_e, mu_e, _) in EXPERIMENT.items():
+        if abs(rho - rho_e) < 0.5 and abs(mu - mu_e) < 1e-6:
+            return name
+    sys.exit(f"{folder}: fluid {rho} kg/m^3, {mu} Pa s is none of E1-E4")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("folders", nargs="+")
+    parser.add_argument("--doc", default="doc/validation")
+    parser.add_argument("--label", nargs="*", default=None,
+                        help="legend label per folder (default: folder name)")
+    args = parser.parse_args()
+    os.makedirs(args.doc, exist_ok=True)
+
+    figs = {k: plt.subplots(figsize=(7, 4)) for k in ("velocity", "gap", "energy")}
+    rows = []
+    for k, folder in enumerate(args.folders):
+        case = identify(folder)
+        u_exp = EXPERIMENT[case][2]
+        names, p = read_series(os.path.join(folder, "particle_0.dat"))
+        _, flow = read_series(os.path.join(folder, "flow.dat"))
+        t = p[:, names.index("time")]
+        w = -p[:, names.index("w")]
+        z = p[:, names.index("z")]
+        radius = float(used_value(folder, "Radius"))
+        gap = (z - radius) / (2 * radius)
+        i = int(np.argmax(w))
+        error = (w[i] - u_exp) / u_exp
+        label = args.label[k] if args.label else os.path.basename(folder.rstrip("/"))
+        rows.append((case, label, w[i], t[i], u_exp, error, t[-1]))
+        print(f"{case} {label}: u_max = {w[i]:.5f} m/s at t = {t[i]:.3f} s, "
+              f"experiment {u_exp:.5f} m/s, error {100 * error:+.2f} % "
+              f"(run to t = {t[-1]:.3f} s)")
+        line, = figs["velocity"][1].plot(t, w, label=f"{case} {label}")
+        figs["velocity"][1].axhline(u_exp, color=line.get_color(), ls=":",
+                                    lw=1)
+        figs["gap"][1].plot(t, gap, label=f"{case} {label}")
+        ax = figs["energy"][1]
+        ax.semilogy(flow[:, 0], flow[:, 2], color=line.get_color(),
+                    label=f"{case} {label}: particle")
+        ax.semilogy(flow[:, 0], flow[:, 1], color=line.get_color(), ls="--",
+                    label=f"{case} {label}: fluid")
+
+    labels = {"velocity": "settling velocity [m/s] (dotted: experiment u_max)",
+              "gap": "gap height h / d_p",
+              "energy": "kinetic energy [J]"}
+    for key, (fig, ax) in figs.items():
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel(labels[key])
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.doc, f"ten-cate-{key}.png"), dpi=120)
+    with open(os.path.join(args.doc, "ten-cate.dat"), "w") as f:
+        f.write("# case run u_max time_of_u_max u_max_experiment "
+                "relative_error end_time\n")
+        for r in rows:
+            f.write(f"{r[0]} {r[1]} {r[2]:.6g} {r[3]:.4g} {r[4]:.6g} "
+                    f"{r[5]:.5g} {r[6]:.4g}\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Refinement study of a ten Cate case: run prm/ten-cate/ten-cate-<case>.prm
+# at the given refinement levels (output/ten-cate-<case>-r<level>/) on 2 MPI
+# ranks, then compare them with the experiment (scripts/validation/ten_cate.py,
+# figures into doc/validation/).
+#   scripts/validation/ten_cate_levels.sh e4 0 1
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+case_name="$1"; shift
+base="prm/ten-cate/ten-cate-${case_name}.prm"
+[[ -f "$base" ]] || { echo "no case file $base" >&2; exit 1; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+folders=(); labels=()
+for level in "$@"; do
+  out="output/ten-cate-${case_name}-r${level}"
+  mkdir -p "$out"
+  # the case file with another 'Refinements' and output folder
+  sed -e "s/^\( *set Refinements *=\).*/\1 ${level}/" \
+      -e "s#^\( *set Directory *=\).*#\1 ${out}#" "$base" > "$out/case.prm"
+  mpirun -np 2 build/particulate "$out/case.prm" | tee "$out/run.log" || true
+  folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D")
+done
+/usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}"
