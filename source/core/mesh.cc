@@ -110,8 +110,8 @@ namespace particulate {
       const std::string t = prm.get("Type");
       type                = t == "file"                  ? Type::file :
                             t == "channel with cylinder" ? Type::channel_with_cylinder :
-                            t == "graded rectangle"      ? Type::graded_rectangle :
-                                                           Type::hyper_rectangle;
+                            t == "graded rectangle" ? Type::graded_rectangle :
+                                                      Type::hyper_rectangle;
       file_name           = prm.get("File name");
       refinements         = prm.get_integer("Refinements");
       const auto doubles  = [&](const std::string &name) {
@@ -120,8 +120,8 @@ namespace particulate {
           v.push_back(Utilities::string_to_double(s));
         return v;
       };
-      lower_corner = doubles("Lower corner");
-      upper_corner = doubles("Upper corner");
+      lower_corner   = doubles("Lower corner");
+      upper_corner   = doubles("Upper corner");
       fine_lower     = doubles("Fine region lower corner");
       fine_upper     = doubles("Fine region upper corner");
       fine_cell_size = core::get_positive_double(prm, "Fine cell size", "Mesh");

@@ -29,9 +29,8 @@ namespace particulate {
     SimulationParameters::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Simulation");
-      type      = prm.get("Type") == "particulate flow" ?
-                    Type::particulate_flow :
-                    Type::fluid;
+      type = prm.get("Type") == "particulate flow" ? Type::particulate_flow :
+                                                     Type::fluid;
       dimension = prm.get_integer("Dimension");
       prm.leave_subsection();
     }

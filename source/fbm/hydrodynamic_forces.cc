@@ -10,30 +10,29 @@ namespace particulate {
 
     template <int dim>
     std::vector<HydrodynamicLoad>
-    hydrodynamic_loads(const fluid::NavierStokes<dim>      &flow,
-                       const FictitiousBoundary<dim>       &interface,
+    hydrodynamic_loads(const fluid::NavierStokes<dim>     &flow,
+                       const FictitiousBoundary<dim>      &interface,
                        const std::vector<Eigen::Vector3d> &centres)
     {
-      const unsigned int n_bodies = centres.size();
+      const unsigned int  n_bodies = centres.size();
       std::vector<double> sums(6 * n_bodies, 0.);
       if (n_bodies == 0)
         return {};
 
-      const FESystem<dim> &fe = flow.get_fe();
-      const QGauss<dim>    quadrature(3);
-      FEValues<dim>        fe_values(flow.get_mapping(),
+      const FESystem<dim>             &fe = flow.get_fe();
+      const QGauss<dim>                quadrature(3);
+      FEValues<dim>                    fe_values(flow.get_mapping(),
                               fe,
                               quadrature,
                               update_values | update_gradients
-                                | update_quadrature_points
-                                | update_JxW_values);
-      const unsigned int   n_q = quadrature.size();
+                                | update_quadrature_points | update_JxW_values);
+      const unsigned int               n_q = quadrature.size();
       const FEValuesExtractors::Vector velocities(0);
       const FEValuesExtractors::Scalar pressure(dim);
       std::vector<Tensor<2, dim>>      grad_u(n_q);
       std::vector<double>              p(n_q);
       std::vector<Tensor<1, dim>>      grad_alpha(n_q);
-      const auto &viscosity = flow.get_viscosity_model();
+      const auto                      &viscosity = flow.get_viscosity_model();
 
       // cell-local index of the x-velocity DoF at each velocity node
       const unsigned int        n_nodes = interface.nodes_per_cell();
@@ -88,8 +87,8 @@ namespace particulate {
                     = -p[q] * unit_symmetric_tensor<dim>() + 2. * mu * D;
                   const Tensor<1, dim> f
                     = -(sigma * grad_alpha[q]) * fe_values.JxW(q);
-                  Eigen::Vector3d f3 = Eigen::Vector3d::Zero(),
-                                  r3 = Eigen::Vector3d::Zero();
+                  Eigen::Vector3d f3  = Eigen::Vector3d::Zero(),
+                                  r3  = Eigen::Vector3d::Zero();
                   const Point<dim> &x = fe_values.quadrature_point(q);
                   for (unsigned int d = 0; d < dim; ++d)
                     {

@@ -33,8 +33,8 @@ namespace particulate {
             if (coordinates.size() != dim)
               fail(entry,
                    "'" + item + "' has " + std::to_string(coordinates.size())
-                     + " coordinates; a " + std::to_string(dim)
-                     + "D run needs " + std::to_string(dim)
+                     + " coordinates; a " + std::to_string(dim) + "D run needs "
+                     + std::to_string(dim)
                      + " per point, points separated by ';'.");
             Eigen::Vector3d p = Eigen::Vector3d::Zero();
             for (unsigned int d = 0; d < dim; ++d)
@@ -187,18 +187,18 @@ namespace particulate {
     ParticleParameters::parse(ParameterHandler &prm, const unsigned int dim)
     {
       prm.enter_subsection("Particles");
-      shape   = prm.get("Shape") == "disk" ? Shape::disk : Shape::sphere;
-      radius  = prm.get_double("Radius");
-      density = prm.get_double("Density");
-      motion  = prm.get("Motion") == "fixed" ? Motion::fixed : Motion::free;
+      shape      = prm.get("Shape") == "disk" ? Shape::disk : Shape::sphere;
+      radius     = prm.get_double("Radius");
+      density    = prm.get_double("Density");
+      motion     = prm.get("Motion") == "fixed" ? Motion::fixed : Motion::free;
       positions  = parse_points(prm.get("Positions"), dim, "Positions");
       velocities = parse_points(prm.get("Velocities"), dim, "Velocities");
-      const auto g
-        = Utilities::split_string_list(prm.get("Gravity"), ',');
+      const auto g = Utilities::split_string_list(prm.get("Gravity"), ',');
       gravity.setZero();
       if (g.size() < dim)
-        fail("Gravity", "a " + std::to_string(dim) + "D run needs "
-                          + std::to_string(dim) + " components.");
+        fail("Gravity",
+             "a " + std::to_string(dim) + "D run needs " + std::to_string(dim)
+               + " components.");
       for (unsigned int d = 0; d < dim; ++d)
         gravity[d] = Utilities::string_to_double(g[d]);
       locked_translation
@@ -209,7 +209,7 @@ namespace particulate {
       contact_solver         = prm.get("Contact solver");
       restitution            = prm.get_double("Restitution");
       friction               = prm.get_double("Friction");
-      const auto read_faces = [&](const std::string &entry) {
+      const auto read_faces  = [&](const std::string &entry) {
         const std::string   text = Utilities::trim(prm.get(entry));
         std::array<bool, 6> faces;
         faces.fill(text == "all");
@@ -220,12 +220,14 @@ namespace particulate {
             for (const std::string &w : Utilities::split_string_list(text, ','))
               {
                 const auto it = std::find(names.begin(), names.end(), w);
-                if (it == names.end() || int(it - names.begin()) >= 2 * int(dim))
+                if (it == names.end()
+                    || int(it - names.begin()) >= 2 * int(dim))
                   fail(entry,
-                       "'" + w
-                         + "' is not a face of this " + std::to_string(dim)
+                       "'" + w + "' is not a face of this "
+                         + std::to_string(dim)
                          + "D box; write 'all', 'none' or a list of x-, x+, "
-                           "y-, y+" + (dim == 3 ? ", z-, z+." : "."));
+                            "y-, y+"
+                         + (dim == 3 ? ", z-, z+." : "."));
                 faces[it - names.begin()] = true;
               }
           }
@@ -233,7 +235,7 @@ namespace particulate {
       };
       walls           = read_faces("Domain walls");
       symmetry_planes = read_faces("Symmetry planes");
-      substeps               = prm.get_integer("Rigid substeps");
+      substeps        = prm.get_integer("Rigid substeps");
       prm.leave_subsection();
 
       if (dim == 2)
@@ -266,8 +268,8 @@ namespace particulate {
         fail("Density", "must be positive.");
       if (!velocities.empty() && velocities.size() != positions.size())
         fail("Velocities",
-             "gives " + std::to_string(velocities.size())
-               + " velocities for " + std::to_string(positions.size())
+             "gives " + std::to_string(velocities.size()) + " velocities for "
+               + std::to_string(positions.size())
                + " particles; give one per particle or none.");
     }
   } // namespace fbm

@@ -92,9 +92,9 @@ namespace particulate {
                         pcout,
                         TimerOutput::never,
                         TimerOutput::wall_times);
-      const auto &flow_p     = parameters.flow;
-      const auto &particle_p = parameters.particles;
-      const auto &time_p     = flow_p.time;
+      const auto        &flow_p     = parameters.flow;
+      const auto        &particle_p = parameters.particles;
+      const auto        &time_p     = flow_p.time;
       if (time_p.scheme == core::TimeParameters::Scheme::steady
           && particle_p.motion == ParticleParameters::Motion::free)
         throw std::runtime_error(
@@ -121,9 +121,9 @@ namespace particulate {
           if (particle_p.positions[i][d] < box_lower[d]
               || particle_p.positions[i][d] > box_upper[d])
             throw std::runtime_error(
-              parameter_file + ": subsection 'Particles', entry 'Positions': "
-              + "particle " + std::to_string(i)
-              + " lies outside the mesh's bounding box.");
+              parameter_file
+              + ": subsection 'Particles', entry 'Positions': " + "particle "
+              + std::to_string(i) + " lies outside the mesh's bounding box.");
       // mirror planes: the centres lie on them
       unsigned int n_images = 1;
       for (unsigned int f = 0; f < 2 * dim; ++f)
@@ -151,11 +151,12 @@ namespace particulate {
       // --- rigid bodies ------------------------------------------------
       const double rho_f = flow_p.fluid.properties.density;
       const double rho_p = particle_p.density;
-      const bool   free  = particle_p.motion == ParticleParameters::Motion::free;
+      const bool   free = particle_p.motion == ParticleParameters::Motion::free;
       const double volume = particle_volume(particle_p);
       // Added-mass correction: the engine integrates the particle with mass
       // m + m_a (density rho_p + C rho_f); the force gets + m_a a_old.
-      const double rho_engine = rho_p + particle_p.added_mass_coefficient * rho_f;
+      const double rho_engine
+        = rho_p + particle_p.added_mass_coefficient * rho_f;
 
       rigid::WorldParameters world_p;
       world_p.gravity = Eigen::Vector3d::Zero(); // applied as (dM) g below
@@ -172,7 +173,7 @@ namespace particulate {
       const unsigned int particle_material = world.add_material(material);
       rigid::Material    wall_material     = material;
       wall_material.name                   = "wall";
-      const unsigned int wall_material_id = world.add_material(wall_material);
+      const unsigned int wall_material_id  = world.add_material(wall_material);
 
       std::shared_ptr<const rigid::Shape> shape;
       if (particle_p.shape == ParticleParameters::Shape::disk)
@@ -230,11 +231,10 @@ namespace particulate {
         particle_series.push_back(std::make_unique<core::TimeSeriesWriter>(
           dir + "/particle_" + std::to_string(i) + ".dat",
           std::vector<std::string>{
-            "time",       "x",          "y",          "z",
-            "u",          "v",          "w",          "omega_x",
-            "omega_y",    "omega_z",    "F_x",        "F_y",
-            "F_z",        "T_x",        "T_y",        "T_z",
-            "Fc_x",       "Fc_y",       "Fc_z",       "kinetic_energy",
+            "time",        "x",    "y",       "z",       "u",
+            "v",           "w",    "omega_x", "omega_y", "omega_z",
+            "F_x",         "F_y",  "F_z",     "T_x",     "T_y",
+            "T_z",         "Fc_x", "Fc_y",    "Fc_z",    "kinetic_energy",
             "nodes_inside"},
           communicator));
       core::TimeSeriesWriter flow_series(dir + "/flow.dat",
@@ -246,8 +246,7 @@ namespace particulate {
                                           "time_step"},
                                          communicator);
       fluid::FlowOutput<dim> flow_output(dir, "flow");
-      const bool             root
-        = Utilities::MPI::this_mpi_process(communicator) == 0;
+      const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
       rigid::VtpWriter body_output(dir + "/particles");
 
       // --- state ---------------------------------------------------------
@@ -265,8 +264,9 @@ namespace particulate {
       };
       const auto particle_energy = [&](const rigid::RigidBody &b) {
         return 0.5 * rho_p * volume * b.linear_velocity.squaredNorm()
-               + 0.5 * b.angular_velocity.dot(true_inertia_world(b)
-                                              * b.angular_velocity);
+               + 0.5
+                   * b.angular_velocity.dot(true_inertia_world(b)
+                                            * b.angular_velocity);
       };
 
       const auto record = [&](const double                  t,
@@ -276,14 +276,14 @@ namespace particulate {
         double             particles_energy = 0.;
         for (unsigned int i = 0; i < n; ++i)
           {
-            const rigid::RigidBody &b = world.body(ids[i]);
+            const rigid::RigidBody &b       = world.body(ids[i]);
             Eigen::Vector3d         contact = Eigen::Vector3d::Zero();
             if (t > 0.)
               for (const auto &f : world.contact_forces(ids[i]))
                 contact += f.force;
             const double e = particle_energy(b);
             particles_energy += e;
-            std::vector<double> row{t};
+            std::vector<double>                          row{t};
             const std::array<const Eigen::Vector3d *, 6> columns{
               {&b.position,
                &b.linear_velocity,
@@ -325,17 +325,17 @@ namespace particulate {
           interface.constraint_values(interface_bodies));
       };
 
-      double       t    = 0.;
-      double       dt   = time_p.time_step;
-      unsigned int step = 0;
-      core::ProgressReporter progress(pcout.get_stream(),
-                                      0.,
-                                      time_p.scheme
-                                          == core::TimeParameters::Scheme::steady ?
-                                        1. :
-                                        time_p.end_time);
+      double                 t    = 0.;
+      double                 dt   = time_p.time_step;
+      unsigned int           step = 0;
+      core::ProgressReporter progress(
+        pcout.get_stream(),
+        0.,
+        time_p.scheme == core::TimeParameters::Scheme::steady ?
+          1. :
+          time_p.end_time);
       const auto counts = [&](const fluid::SolveStatistics &s) {
-        char buffer[160];
+        char                   buffer[160];
         const Eigen::Vector3d &u = world.body(ids[0]).linear_velocity;
         std::snprintf(buffer,
                       sizeof(buffer),
@@ -357,12 +357,12 @@ namespace particulate {
           const auto stats
             = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
           {
-            TimerOutput::Scope scope(timer, "fbm: forces");
+            TimerOutput::Scope           scope(timer, "fbm: forces");
             std::vector<Eigen::Vector3d> centres;
             for (const auto id : ids)
               centres.push_back(world.body(id).position);
             loads = hydrodynamic_loads(flow, interface, centres);
-                add_mirror_images(loads, particle_p.symmetry_planes);
+            add_mirror_images(loads, particle_p.symmetry_planes);
           }
           step = 1;
           record(0., 0., stats);
@@ -390,14 +390,14 @@ namespace particulate {
               }
               // 4. rigid bodies
               {
-                TimerOutput::Scope scope(timer, "rigid bodies");
+                TimerOutput::Scope           scope(timer, "rigid bodies");
                 std::vector<Eigen::Vector3d> old_velocity(n),
                   old_angular_velocity(n), old_position(n);
                 std::vector<Eigen::Quaterniond> old_orientation(n);
                 for (unsigned int i = 0; i < n; ++i)
                   {
-                    rigid::RigidBody &b = world.body(ids[i]);
-                    old_velocity[i]     = b.linear_velocity;
+                    rigid::RigidBody &b     = world.body(ids[i]);
+                    old_velocity[i]         = b.linear_velocity;
                     old_angular_velocity[i] = b.angular_velocity;
                     old_position[i]         = b.position;
                     old_orientation[i]      = b.orientation;
@@ -451,7 +451,8 @@ namespace particulate {
                         + " s: the coupling diverged. Reduce 'Time step' in "
                           "subsection 'Time' or raise 'Added mass "
                           "coefficient' in subsection 'Particles'.");
-                    acceleration[i] = (b.linear_velocity - old_velocity[i]) / dt;
+                    acceleration[i]
+                      = (b.linear_velocity - old_velocity[i]) / dt;
                     angular_acceleration[i]
                       = (b.angular_velocity - old_angular_velocity[i]) / dt;
                   }
@@ -470,10 +471,9 @@ namespace particulate {
                 progress.report(step, t, dt, counts(stats));
               if (time_p.adaptive)
                 {
-                  const double cfl      = flow.cfl_number(dt);
-                  const double proposal = cfl > 0. ?
-                                            dt * time_p.cfl_target / cfl :
-                                            1.2 * dt;
+                  const double cfl = flow.cfl_number(dt);
+                  const double proposal
+                    = cfl > 0. ? dt * time_p.cfl_target / cfl : 1.2 * dt;
                   dt = std::clamp(std::clamp(proposal, 0.8 * dt, 1.2 * dt),
                                   time_p.minimum_time_step,
                                   time_p.maximum_time_step);

@@ -96,12 +96,9 @@ namespace particulate {
       std::vector<Tensor<1, dim>> grad_phi(n_s);
       // the local matrix by blocks: (c, d) velocity components
       std::vector<double> block_uu(dim * dim * n_s * n_s);
-      const auto          uu = [&](unsigned int c,
-                          unsigned int d,
-                          unsigned int a,
-                          unsigned int b) -> double & {
-        return block_uu[((c * dim + d) * n_s + a) * n_s + b];
-      };
+      const auto          uu
+        = [&](unsigned int c, unsigned int d, unsigned int a, unsigned int b)
+        -> double & { return block_uu[((c * dim + d) * n_s + a) * n_s + b]; };
       // B: (pressure k, component d, scalar b) -> -(psi_k, d_d phi_b)
       std::vector<double> block_pu(n_p * dim * n_s);
 
@@ -207,7 +204,7 @@ namespace particulate {
                 //             + ti rho phi_a (advecting.grad phi_b)]
                 //   + ti mu d_d phi_a d_c phi_b   (the transpose in D(u))
                 //   + ti rho d_d u_c phi_a phi_b  (Newton only)
-                const double viscous = ti * mu * JxW;
+                const double viscous       = ti * mu * JxW;
                 const double newton_weight = newton ? ti * rho * JxW : 0.;
                 for (unsigned int b = 0; b < n_s; ++b)
                   advect_phi[b] = ti * rho * (advecting * grad_phi[b]) * JxW;
@@ -290,7 +287,7 @@ namespace particulate {
       void
       regularise_empty_pressure_rows(TrilinosWrappers::SparseMatrix &matrix)
       {
-        const IndexSet &owned = matrix.locally_owned_range_indices();
+        const IndexSet &owned   = matrix.locally_owned_range_indices();
         double          largest = 0.;
         for (const auto row : owned)
           largest = std::max(largest, std::abs(matrix.diag_element(row)));

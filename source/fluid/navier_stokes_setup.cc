@@ -225,12 +225,13 @@ namespace particulate {
       // L_p = B D^{-1} B^T depends on which velocity DoFs are constrained:
       // rebuild it when a body has moved over a node (the values alone
       // change every step and do not matter to it).
-      const bool same_nodes = std::equal(
-        values.begin(),
-        values.end(),
-        fictitious_boundary_values.begin(),
-        fictitious_boundary_values.end(),
-        [](const auto &a, const auto &b) { return a.first == b.first; });
+      const bool same_nodes = std::equal(values.begin(),
+                                         values.end(),
+                                         fictitious_boundary_values.begin(),
+                                         fictitious_boundary_values.end(),
+                                         [](const auto &a, const auto &b) {
+                                           return a.first == b.first;
+                                         });
       // collective: every rank must rebuild together
       if (Utilities::MPI::max(same_nodes ? 0 : 1, communicator) > 0)
         schur_approximation_is_current = false;

@@ -12,7 +12,7 @@
 namespace particulate::geometry {
 
   namespace {
-    constexpr char          magic[8] = {'P', 'T', 'D', 'M', 'A', 'P', '0', '1'};
+    constexpr char magic[8] = {'P', 'T', 'D', 'M', 'A', 'P', '0', '1'};
     // 2: signs from the exact side test (maps of version 1 may hold wrong
     // signs near thin features); bump whenever the content would change.
     constexpr std::uint64_t format_version = 2;

@@ -29,7 +29,7 @@ namespace {
     fbm::ParticulateFlowSimulation<2> simulation(parameters,
                                                  "dfg-2d-1-fbm.prm",
                                                  MPI_COMM_WORLD);
-    const auto summary = simulation.run();
+    const auto                        summary = simulation.run();
     // c_D = 2 F_x / (rho U_mean^2 D), U_mean = 0.2 m/s, D = 0.1 m, rho = 1
     return 2. * summary.force[0][0] / (1. * 0.2 * 0.2 * 0.1);
   }

@@ -7,9 +7,9 @@
 
 #include <particulate/fbm/hydrodynamic_forces.h>
 
-#include "../fluid/test_utilities.h"
-
 #include <random>
+
+#include "../fluid/test_utilities.h"
 
 using namespace particulate;
 
@@ -26,9 +26,10 @@ main(int argc, char **argv)
     {
       Eigen::Vector3d r(uniform(random), uniform(random), uniform(random));
       r = r.cwiseAbs();
-      points.emplace_back(r, Eigen::Vector3d(uniform(random),
-                                             uniform(random),
-                                             uniform(random)));
+      points.emplace_back(r,
+                          Eigen::Vector3d(uniform(random),
+                                          uniform(random),
+                                          uniform(random)));
     }
 
   for (unsigned int mask = 1; mask < 8; ++mask)
@@ -47,13 +48,13 @@ main(int argc, char **argv)
             const std::size_t n = full.size();
             for (std::size_t k = 0; k < n; ++k)
               {
-                auto image = full[k];
+                auto image      = full[k];
                 image.first[a]  = -image.first[a];
                 image.second[a] = -image.second[a];
                 full.push_back(image);
               }
           }
-      Eigen::Vector3d force = Eigen::Vector3d::Zero(),
+      Eigen::Vector3d force  = Eigen::Vector3d::Zero(),
                       torque = Eigen::Vector3d::Zero();
       for (const auto &[r, f] : full)
         {
@@ -68,8 +69,8 @@ main(int argc, char **argv)
           loads[0].torque += r.cross(f);
         }
       fbm::add_mirror_images(loads, planes);
-      const double error = (loads[0].force - force).norm()
-                           + (loads[0].torque - torque).norm();
+      const double error
+        = (loads[0].force - force).norm() + (loads[0].torque - torque).norm();
       checker.check(error < 1e-12 * (force.norm() + torque.norm() + 1.),
                     "mirror planes (x, y, z) = (" + std::to_string(mask & 1)
                       + ", " + std::to_string((mask >> 1) & 1) + ", "

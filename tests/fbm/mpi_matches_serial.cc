@@ -54,7 +54,7 @@ main(int argc, char **argv)
   fbm::ParticulateFlowSummary serial;
   if (rank == 0)
     {
-      serial = run(MPI_COMM_SELF, "settling_disk_serial");
+      serial                  = run(MPI_COMM_SELF, "settling_disk_serial");
       const std::string ranks = " on " + std::to_string(n_ranks) + " ranks";
       checker.check(parallel.n_steps == serial.n_steps && serial.n_steps == 15,
                     "same number of steps (15)");

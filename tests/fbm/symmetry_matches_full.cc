@@ -32,7 +32,7 @@ namespace {
     fbm::ParticulateFlowSimulation<2> simulation(parameters,
                                                  "settling-disk.prm",
                                                  MPI_COMM_WORLD);
-    const auto summary = simulation.run();
+    const auto                        summary = simulation.run();
     // the fluid's kinetic energy at the end: column 2 of flow.dat
     std::ifstream series(output + "/flow.dat");
     std::string   line, last;
@@ -54,16 +54,17 @@ main(int argc, char **argv)
 
   const auto [full, full_energy]
     = run("subsection Mesh\n set Refinements = 4\nend\n", "symmetry_full");
-  const auto [half, half_energy] = run(
-    "subsection Mesh\n set Lower corner = 0.01, 0\n"
-    " set Subdivisions = 1, 4\n set Refinements = 3\nend\n"
-    "subsection Boundary conditions\n set Free-slip = 0\n"
-    " set No-slip = 1, 2, 3\nend\n"
-    "subsection Particles\n set Locked translations = x\n"
-    " set Symmetry planes = x-\n set Domain walls = x+, y-, y+\nend\n",
-    "symmetry_half");
+  const auto [half, half_energy]
+    = run("subsection Mesh\n set Lower corner = 0.01, 0\n"
+          " set Subdivisions = 1, 4\n set Refinements = 3\nend\n"
+          "subsection Boundary conditions\n set Free-slip = 0\n"
+          " set No-slip = 1, 2, 3\nend\n"
+          "subsection Particles\n set Locked translations = x\n"
+          " set Symmetry planes = x-\n set Domain walls = x+, y-, y+\nend\n",
+          "symmetry_half");
 
-  checker.check(full.n_dofs > 1.9 * half.n_dofs, "the half run has half the DoFs");
+  checker.check(full.n_dofs > 1.9 * half.n_dofs,
+                "the half run has half the DoFs");
   checker.check_relative(half.velocity[0][1],
                          full.velocity[0][1],
                          1e-6,

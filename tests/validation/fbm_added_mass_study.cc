@@ -20,21 +20,21 @@
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
-#include "../fluid/test_utilities.h"
-
 #include <cstdio>
 #include <fstream>
 #include <map>
+
+#include "../fluid/test_utilities.h"
 
 using namespace particulate;
 
 namespace {
   struct Outcome
   {
-    bool   stable        = false;
-    double final_speed   = 0.;
-    double flip_fraction = 0.;
-    double wall_seconds  = 0.;
+    bool        stable        = false;
+    double      final_speed   = 0.;
+    double      flip_fraction = 0.;
+    double      wall_seconds  = 0.;
     std::string note;
   };
 
@@ -42,7 +42,12 @@ namespace {
   run(const double ratio, const double dt, const double C)
   {
     char name[96];
-    std::snprintf(name, sizeof(name), "added_mass_r%.2f_dt%.5f_C%.0f", ratio, dt, C);
+    std::snprintf(name,
+                  sizeof(name),
+                  "added_mass_r%.2f_dt%.5f_C%.0f",
+                  ratio,
+                  dt,
+                  C);
     char overrides[512];
     std::snprintf(overrides,
                   sizeof(overrides),
@@ -55,7 +60,8 @@ namespace {
                   1000. * ratio,
                   C);
     auto parameters = fbm::read_particulate_flow_case(
-      testing::source_path("prm/settling-disk/settling-disk.prm"), overrides);
+      testing::source_path("prm/settling-disk/settling-disk.prm"),
+      overrides);
     parameters.flow.output.directory = name;
     parameters.flow.output.write_vtu = false;
     std::filesystem::create_directories(name);
@@ -65,9 +71,9 @@ namespace {
         fbm::ParticulateFlowSimulation<2> simulation(parameters,
                                                      "settling-disk.prm",
                                                      MPI_COMM_SELF);
-        const auto summary   = simulation.run();
-        outcome.final_speed  = summary.velocity[0][1];
-        outcome.wall_seconds = summary.wall_seconds;
+        const auto                        summary = simulation.run();
+        outcome.final_speed                       = summary.velocity[0][1];
+        outcome.wall_seconds                      = summary.wall_seconds;
       }
     catch (const std::exception &e)
       {
@@ -133,9 +139,11 @@ main(int argc, char **argv)
             if (C == 1.)
               {
                 char what[96];
-                std::snprintf(what, sizeof(what),
+                std::snprintf(what,
+                              sizeof(what),
                               "C = 1 stable at ratio %.2f, dt %.2f ms",
-                              ratio, 1e3 * dt);
+                              ratio,
+                              1e3 * dt);
                 checker.check(o.stable, what);
                 speed_with_correction[dt] = o.final_speed;
               }

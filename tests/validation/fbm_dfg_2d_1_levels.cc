@@ -10,9 +10,9 @@
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
-#include "../fluid/test_utilities.h"
-
 #include <cstdio>
+
+#include "../fluid/test_utilities.h"
 
 using namespace particulate;
 
@@ -22,10 +22,12 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                         checker;
   const unsigned int finest = argc > 1 ? std::atoi(argv[1]) : 5;
-  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool         root
+    = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const double c_d_reference = 5.57953523384, c_l_reference = 0.010618948146;
 
-  std::FILE *table = root ? std::fopen("fbm_dfg_2d_1_levels.dat", "w") : nullptr;
+  std::FILE *table
+    = root ? std::fopen("fbm_dfg_2d_1_levels.dat", "w") : nullptr;
   if (table)
     std::fprintf(table,
                  "# level cells_per_diameter dofs c_D c_L c_D_reference "
@@ -46,7 +48,7 @@ main(int argc, char **argv)
       fbm::ParticulateFlowSimulation<2> simulation(parameters,
                                                    "dfg-2d-1-fbm.prm",
                                                    MPI_COMM_WORLD);
-      const auto summary = simulation.run();
+      const auto                        summary = simulation.run();
       // c = 2 F / (rho U_mean^2 D), U_mean = 0.2 m/s, D = 0.1 m, rho = 1
       const double c_d = 2. * summary.force[0][0] / (0.2 * 0.2 * 0.1);
       const double c_l = 2. * summary.force[0][1] / (0.2 * 0.2 * 0.1);
@@ -66,9 +68,9 @@ main(int argc, char **argv)
                       c_l,
                       c_l_reference,
                       errors.size() > 1 ?
-                        (", drag order " +
-                         std::to_string(std::log2(errors[errors.size() - 2] /
-                                                  errors.back())))
+                        (", drag order "
+                         + std::to_string(std::log2(errors[errors.size() - 2]
+                                                    / errors.back())))
                           .c_str() :
                         "");
           std::fprintf(table,
@@ -87,7 +89,8 @@ main(int argc, char **argv)
     }
   if (table)
     std::fclose(table);
-  checker.check(errors.back() < 1.5e-2, "drag error on the finest level < 1.5 %");
+  checker.check(errors.back() < 1.5e-2,
+                "drag error on the finest level < 1.5 %");
   checker.check(errors.back() < errors.front(),
                 "drag error decreases from the coarsest to the finest level");
   return checker.exit_code();

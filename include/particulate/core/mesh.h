@@ -29,10 +29,10 @@ namespace particulate {
       /// ratio of the cells outside it
       std::vector<double> fine_lower{0., 0., 0.};
       std::vector<double> fine_upper{1., 1., 1.};
-      double              fine_cell_size = 0.1; ///< [m], coarse level
-      double              grading_ratio  = 1.2;
-      double                    cylinder_shell_width = 0.03;
-      unsigned int              cylinder_shells      = 2;
+      double              fine_cell_size       = 0.1; ///< [m], coarse level
+      double              grading_ratio        = 1.2;
+      double              cylinder_shell_width = 0.03;
+      unsigned int        cylinder_shells      = 2;
       double cylinder_center_x = 0.2; ///< [m], DFG 2D: 0.2, 3D-1Z: 0.5
       double channel_length    = 2.2; ///< [m], DFG 2D: 2.2, 3D-1Z: 2.5
       /// directory of the `.prm` file: relative mesh paths start there

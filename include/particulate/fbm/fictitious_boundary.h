@@ -74,8 +74,9 @@ namespace particulate {
       }
 
       /** Locally owned cells, in the order of cell_nodes(). */
-      const std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> &
-      owned_cells() const
+      const std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator>
+        &
+        owned_cells() const
       {
         return cells;
       }
@@ -103,13 +104,12 @@ namespace particulate {
     private:
       const fluid::NavierStokes<dim> &flow;
       /// per node its position (z = 0 in 2D) and its dim velocity DoFs
-      std::vector<Eigen::Vector3d>          positions;
-      std::vector<std::array<DofIndex, 3>>  node_dofs;
-      std::vector<bool>                     node_is_owned_cell_node;
+      std::vector<Eigen::Vector3d>             positions;
+      std::vector<std::array<DofIndex, 3>>     node_dofs;
+      std::vector<bool>                        node_is_owned_cell_node;
       std::unique_ptr<geometry::PointHashGrid> grid;
-      std::vector<int>                      node_body;
-      std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator>
-                                cells;
+      std::vector<int>                         node_body;
+      std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> cells;
       std::vector<unsigned int> nodes_of_cells;
       unsigned int              nodes_per_cell_ = 0;
     };

@@ -7,7 +7,6 @@
 #include <Eigen/Core>
 
 #include <array>
-
 #include <vector>
 
 namespace particulate {
@@ -36,8 +35,8 @@ namespace particulate {
      */
     template <int dim>
     std::vector<HydrodynamicLoad>
-    hydrodynamic_loads(const fluid::NavierStokes<dim>      &flow,
-                       const FictitiousBoundary<dim>       &interface,
+    hydrodynamic_loads(const fluid::NavierStokes<dim>     &flow,
+                       const FictitiousBoundary<dim>      &interface,
                        const std::vector<Eigen::Vector3d> &centres);
 
     /**

@@ -47,19 +47,19 @@ namespace particulate {
       /// C in m_a = C rho_f V of the added-mass-corrected coupling
       double added_mass_coefficient = 1.;
       /// contact handling
-      std::string  contact_solver = "sequential impulses";
-      double       restitution    = 0.;
-      double       friction       = 0.;
+      std::string contact_solver = "sequential impulses";
+      double      restitution    = 0.;
+      double      friction       = 0.;
       /// faces of the mesh's bounding box that are walls for contacts, in
       /// the order x-, x+, y-, y+, z-, z+
-      std::array<bool, 6> walls = {{true, true, true, true, true, true}};
-      unsigned int substeps       = 1;
+      std::array<bool, 6> walls    = {{true, true, true, true, true, true}};
+      unsigned int        substeps = 1;
       /// faces of the mesh's bounding box that are mirror planes of the
       /// set-up (x-, x+, y-, y+, z-, z+): the particles lie on them, and the
       /// loads integrated over the part of each body inside the mesh are
       /// completed by their mirror images
-      std::array<bool, 6> symmetry_planes = {{false, false, false, false,
-                                              false, false}};
+      std::array<bool, 6> symmetry_planes
+        = {{false, false, false, false, false, false}};
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -41,9 +41,9 @@ namespace particulate {
     /** What a run measured; used by tests and the final summary. */
     struct ParticulateFlowSummary
     {
-      unsigned int n_steps  = 0;
-      double       end_time = 0.;
-      unsigned long n_dofs  = 0;
+      unsigned int  n_steps  = 0;
+      double        end_time = 0.;
+      unsigned long n_dofs   = 0;
       /// per particle, at the end
       std::vector<Eigen::Vector3d> position, velocity, force, torque;
       /// per particle, the largest speed reached and when [m/s, s]
@@ -69,8 +69,8 @@ namespace particulate {
     {
     public:
       ParticulateFlowSimulation(const ParticulateFlowParameters &parameters,
-                                const std::string &parameter_file,
-                                MPI_Comm           comm);
+                                const std::string               &parameter_file,
+                                MPI_Comm                         comm);
 
       ParticulateFlowSummary
       run();

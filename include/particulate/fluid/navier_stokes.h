@@ -128,8 +128,7 @@ namespace particulate {
        */
       void
       set_fictitious_boundary_values(
-        std::vector<std::pair<dealii::types::global_dof_index, double>>
-          values);
+        std::vector<std::pair<dealii::types::global_dof_index, double>> values);
 
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void
