@@ -1,4 +1,5 @@
 #include <particulate/fbm/hydrodynamic_forces.h>
+#include <particulate/fluid/flow_diagnostics.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -19,20 +20,16 @@ namespace particulate {
       if (n_bodies == 0)
         return {};
 
-      const FESystem<dim>             &fe = flow.get_fe();
-      const QGauss<dim>                quadrature(3);
-      FEValues<dim>                    fe_values(flow.get_mapping(),
+      const FESystem<dim>        &fe = flow.get_fe();
+      const QGauss<dim>           quadrature(3);
+      FEValues<dim>               fe_values(flow.get_mapping(),
                               fe,
                               quadrature,
                               update_values | update_gradients
                                 | update_quadrature_points | update_JxW_values);
-      const unsigned int               n_q = quadrature.size();
-      const FEValuesExtractors::Vector velocities(0);
-      const FEValuesExtractors::Scalar pressure(dim);
-      std::vector<Tensor<2, dim>>      grad_u(n_q);
-      std::vector<double>              p(n_q);
-      std::vector<Tensor<1, dim>>      grad_alpha(n_q);
-      const auto                      &viscosity = flow.get_viscosity_model();
+      const unsigned int          n_q = quadrature.size();
+      std::vector<Tensor<2, dim>> sigma(n_q);
+      std::vector<Tensor<1, dim>> grad_alpha(n_q);
 
       // cell-local index of the x-velocity DoF at each velocity node
       const unsigned int        n_nodes = interface.nodes_per_cell();
@@ -66,9 +63,7 @@ namespace particulate {
             continue;
 
           fe_values.reinit(cells[c]);
-          fe_values[velocities].get_function_gradients(flow.get_solution(),
-                                                       grad_u);
-          fe_values[pressure].get_function_values(flow.get_solution(), p);
+          fluid::cauchy_stress(flow, fe_values, sigma);
           for (const int b : bodies_here)
             {
               for (unsigned int q = 0; q < n_q; ++q)
@@ -81,12 +76,8 @@ namespace particulate {
                 }
               for (unsigned int q = 0; q < n_q; ++q)
                 {
-                  const SymmetricTensor<2, dim> D = symmetrize(grad_u[q]);
-                  const double mu = viscosity.viscosity(std::sqrt(2. * D * D));
-                  const Tensor<2, dim> sigma
-                    = -p[q] * unit_symmetric_tensor<dim>() + 2. * mu * D;
                   const Tensor<1, dim> f
-                    = -(sigma * grad_alpha[q]) * fe_values.JxW(q);
+                    = -(sigma[q] * grad_alpha[q]) * fe_values.JxW(q);
                   Eigen::Vector3d f3  = Eigen::Vector3d::Zero(),
                                   r3  = Eigen::Vector3d::Zero();
                   const Point<dim> &x = fe_values.quadrature_point(q);

@@ -73,14 +73,10 @@ namespace particulate {
                               quadrature,
                               update_values | update_gradients
                                 | update_JxW_values);
-      const FEValuesExtractors::Vector velocities(0);
-      const FEValuesExtractors::Scalar pressure(dim), alpha(0);
+      const FEValuesExtractors::Scalar alpha(0);
       const unsigned int               n_q = quadrature.size();
-      std::vector<Tensor<2, dim>>      grad_u(n_q);
-      std::vector<double>              p(n_q);
+      std::vector<Tensor<2, dim>>      sigma(n_q);
       std::vector<Tensor<1, dim>>      grad_alpha(n_q);
-      std::vector<double>              alpha_values(n_q);
-      const auto                      &viscosity = flow.get_viscosity_model();
 
       Tensor<1, dim> force;
       for (const auto &cell : flow.get_dof_handler().active_cell_iterators())
@@ -93,21 +89,38 @@ namespace particulate {
               largest = std::max(largest, g.norm());
             if (largest == 0.)
               continue; // not a cut cell
-            fe_values[velocities].get_function_gradients(flow.get_solution(),
-                                                         grad_u);
-            fe_values[pressure].get_function_values(flow.get_solution(), p);
+            cauchy_stress(flow, fe_values, sigma);
             for (unsigned int q = 0; q < n_q; ++q)
-              {
-                const SymmetricTensor<2, dim> D = symmetrize(grad_u[q]);
-                const double mu = viscosity.viscosity(std::sqrt(2. * D * D));
-                const Tensor<2, dim> sigma
-                  = -p[q] * unit_symmetric_tensor<dim>() + 2. * mu * D;
-                force -= sigma * grad_alpha[q] * fe_values.JxW(q);
-              }
+              force -= sigma[q] * grad_alpha[q] * fe_values.JxW(q);
           }
       for (unsigned int d = 0; d < dim; ++d)
         force[d] = Utilities::MPI::sum(force[d], flow.get_communicator());
       return force;
+    }
+
+
+
+    template <int dim>
+    void
+    cauchy_stress(const NavierStokes<dim>     &flow,
+                  const FEValues<dim>         &fe_values,
+                  std::vector<Tensor<2, dim>> &sigma)
+    {
+      const unsigned int          n_q = fe_values.n_quadrature_points;
+      std::vector<Tensor<2, dim>> grad_u(n_q);
+      std::vector<double>         p(n_q);
+      fe_values[FEValuesExtractors::Vector(0)]
+        .get_function_gradients(flow.get_solution(), grad_u);
+      fe_values[FEValuesExtractors::Scalar(dim)]
+        .get_function_values(flow.get_solution(), p);
+      const auto &viscosity = flow.get_viscosity_model();
+      sigma.resize(n_q);
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const SymmetricTensor<2, dim> D = symmetrize(grad_u[q]);
+          const double mu = viscosity.viscosity(std::sqrt(2. * D * D));
+          sigma[q]        = -p[q] * unit_symmetric_tensor<dim>() + 2. * mu * D;
+        }
     }
 
 
@@ -223,6 +236,9 @@ namespace particulate {
   template Tensor<1, dim> volume_force(                                       \
     const NavierStokes<dim> &,                                                \
     const NavierStokes<dim>::BlockVector &);                                  \
+  template void cauchy_stress(const NavierStokes<dim> &,                      \
+                              const FEValues<dim> &,                          \
+                              std::vector<Tensor<2, dim>> &);                 \
   template NavierStokes<dim>::BlockVector boundary_indicator(                 \
     const NavierStokes<dim> &,                                                \
     const std::vector<unsigned int> &);                                       \

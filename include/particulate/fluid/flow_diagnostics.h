@@ -5,6 +5,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <vector>
 
@@ -25,13 +26,26 @@ namespace particulate {
      * (thesis eq. 5.12-5.13) with alpha_h a finite-element indicator of
      * the body: @p indicator is a vector in the flow's FE space whose
      * first velocity component holds alpha_h. Only cells where grad alpha_h
-     * is non-zero contribute. The fictitious boundary method evaluates its
-     * forces with the same function.
+     * is non-zero contribute. (The fictitious boundary method integrates
+     * the same stress, from cauchy_stress(), over the cells its bodies cut,
+     * per body and with torques: fbm::hydrodynamic_loads().)
      */
     template <int dim>
     dealii::Tensor<1, dim>
     volume_force(const NavierStokes<dim>                       &flow,
                  const typename NavierStokes<dim>::BlockVector &indicator);
+
+    /**
+     * The Cauchy stress sigma = -p I + 2 mu(D) D(u) (eq. 5.2) of the current
+     * solution at the quadrature points of @p fe_values, which must be
+     * reinit'ed on a cell of the flow's DoFHandler with update_values and
+     * update_gradients. @p sigma is resized to the number of points.
+     */
+    template <int dim>
+    void
+    cauchy_stress(const NavierStokes<dim>             &flow,
+                  const dealii::FEValues<dim>         &fe_values,
+                  std::vector<dealii::Tensor<2, dim>> &sigma);
 
     /**
      * The indicator alpha_h of a body-fitted obstacle: 1 at the velocity
