@@ -1,6 +1,8 @@
 #include <particulate/core/input_file.h>
 #include <particulate/core/simulation_parameters.h>
 
+#include <algorithm>
+
 namespace particulate {
   namespace core {
     using dealii::ParameterHandler;
@@ -33,6 +35,17 @@ namespace particulate {
                                                      Type::fluid;
       dimension = prm.get_integer("Dimension");
       prm.leave_subsection();
+    }
+
+
+
+    double
+    TimeParameters::next_time_step(const double dt, const double cfl) const
+    {
+      const double proposal = cfl > 0. ? dt * cfl_target / cfl : 1.2 * dt;
+      return std::clamp(std::clamp(proposal, 0.8 * dt, 1.2 * dt),
+                        minimum_time_step,
+                        maximum_time_step);
     }
 
 

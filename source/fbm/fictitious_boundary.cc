@@ -44,7 +44,6 @@ namespace particulate {
 
       positions.clear();
       node_dofs.clear();
-      node_is_owned_cell_node.clear();
       cells.clear();
       nodes_of_cells.clear();
       std::unordered_map<DofIndex, unsigned int> node_of_dof;
@@ -73,13 +72,9 @@ namespace particulate {
                     for (unsigned int c = 0; c < dim; ++c)
                       dofs[c] = dof_indices[local_index[k][c]];
                     node_dofs.push_back(dofs);
-                    node_is_owned_cell_node.push_back(false);
                   }
                 if (owned)
-                  {
-                    nodes_of_cells.push_back(it->second);
-                    node_is_owned_cell_node[it->second] = true;
-                  }
+                  nodes_of_cells.push_back(it->second);
               }
           }
       grid = std::make_unique<geometry::PointHashGrid>(positions);
@@ -136,16 +131,17 @@ namespace particulate {
 
 
     template <int dim>
-    unsigned long
-    FictitiousBoundary<dim>::n_nodes_inside(const unsigned int b) const
+    std::vector<unsigned long>
+    FictitiousBoundary<dim>::n_nodes_inside(const unsigned int n_bodies) const
     {
       // count each node once: on the rank that owns its x-velocity DoF
       const IndexSet &owned = flow.get_dof_handler().locally_owned_dofs();
-      unsigned long   n     = 0;
+      std::vector<unsigned long> n(n_bodies, 0);
       for (unsigned int i = 0; i < positions.size(); ++i)
-        if (node_body[i] == int(b) && owned.is_element(node_dofs[i][0]))
-          ++n;
-      return Utilities::MPI::sum(n, flow.get_communicator());
+        if (node_body[i] >= 0 && owned.is_element(node_dofs[i][0]))
+          ++n[node_body[i]];
+      Utilities::MPI::sum(n, flow.get_communicator(), n);
+      return n;
     }
 
     template class FictitiousBoundary<2>;

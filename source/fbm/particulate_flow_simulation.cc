@@ -272,8 +272,10 @@ namespace particulate {
       const auto record = [&](const double                  t,
                               const double                  dt,
                               const fluid::SolveStatistics &stats) {
-        TimerOutput::Scope scope(timer, "diagnostics");
-        double             particles_energy = 0.;
+        TimerOutput::Scope               scope(timer, "diagnostics");
+        double                           particles_energy = 0.;
+        const std::vector<unsigned long> nodes_inside
+          = interface.n_nodes_inside(n);
         for (unsigned int i = 0; i < n; ++i)
           {
             const rigid::RigidBody &b       = world.body(ids[i]);
@@ -295,7 +297,7 @@ namespace particulate {
               for (unsigned int d = 0; d < 3; ++d)
                 row.push_back((*v)[d]);
             row.push_back(e);
-            row.push_back(double(interface.n_nodes_inside(i)));
+            row.push_back(double(nodes_inside[i]));
             particle_series[i]->write_row(row);
             if (b.linear_velocity.norm() > summary.max_speed[i])
               {
@@ -317,6 +319,15 @@ namespace particulate {
         flow_output.write(flow, step, t);
         if (root)
           body_output.write(world);
+      };
+      // fluid loads on the bodies, completed across mirror planes
+      const auto update_loads = [&]() {
+        TimerOutput::Scope           scope(timer, "fbm: forces");
+        std::vector<Eigen::Vector3d> centres;
+        for (const auto id : ids)
+          centres.push_back(world.body(id).position);
+        loads = hydrodynamic_loads(flow, interface, centres);
+        add_mirror_images(loads, particle_p.symmetry_planes);
       };
       const auto impose_particle_velocities = [&]() {
         TimerOutput::Scope scope(timer, "fbm: containment and constraints");
@@ -356,14 +367,7 @@ namespace particulate {
           // fixed obstacles in steady flow: one nonlinear solve
           const auto stats
             = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
-          {
-            TimerOutput::Scope           scope(timer, "fbm: forces");
-            std::vector<Eigen::Vector3d> centres;
-            for (const auto id : ids)
-              centres.push_back(world.body(id).position);
-            loads = hydrodynamic_loads(flow, interface, centres);
-            add_mirror_images(loads, particle_p.symmetry_planes);
-          }
+          update_loads();
           step = 1;
           record(0., 0., stats);
           write_fields(1, 0.);
@@ -380,14 +384,7 @@ namespace particulate {
               const fluid::SolveStatistics stats
                 = flow.advance(t, dt, time_p.scheme);
               // 3. loads from the new flow field, with the interface at t_n
-              std::vector<Eigen::Vector3d> centres;
-              for (const auto id : ids)
-                centres.push_back(world.body(id).position);
-              {
-                TimerOutput::Scope scope(timer, "fbm: forces");
-                loads = hydrodynamic_loads(flow, interface, centres);
-                add_mirror_images(loads, particle_p.symmetry_planes);
-              }
+              update_loads();
               // 4. rigid bodies
               {
                 TimerOutput::Scope           scope(timer, "rigid bodies");
@@ -470,14 +467,7 @@ namespace particulate {
               if (pcout.is_active())
                 progress.report(step, t, dt, counts(stats));
               if (time_p.adaptive)
-                {
-                  const double cfl = flow.cfl_number(dt);
-                  const double proposal
-                    = cfl > 0. ? dt * time_p.cfl_target / cfl : 1.2 * dt;
-                  dt = std::clamp(std::clamp(proposal, 0.8 * dt, 1.2 * dt),
-                                  time_p.minimum_time_step,
-                                  time_p.maximum_time_step);
-                }
+                dt = time_p.next_time_step(dt, flow.cfl_number(dt));
             }
         }
 

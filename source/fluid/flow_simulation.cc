@@ -231,15 +231,7 @@ namespace particulate {
               if (pcout.is_active())
                 progress.report(step, t, dt, counts(stats));
               if (time_p.adaptive)
-                {
-                  // aim at the target CFL number, change by at most 20 %
-                  const double cfl = flow.cfl_number(dt);
-                  const double proposal
-                    = cfl > 0. ? dt * time_p.cfl_target / cfl : 1.2 * dt;
-                  dt = std::clamp(std::clamp(proposal, 0.8 * dt, 1.2 * dt),
-                                  time_p.minimum_time_step,
-                                  time_p.maximum_time_step);
-                }
+                dt = time_p.next_time_step(dt, flow.cfl_number(dt));
             }
         }
       summary.n_steps      = step;

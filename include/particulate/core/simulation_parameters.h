@@ -47,6 +47,14 @@ namespace particulate {
       double minimum_time_step = 1e-6; ///< [s]
       double maximum_time_step = 1.0;  ///< [s]
 
+      /**
+       * The step after one of size @p dt that had the CFL number @p cfl:
+       * aimed at cfl_target, changed by at most 20 %, within the minimum
+       * and maximum time step. Only meaningful when `adaptive` is set.
+       */
+      double
+      next_time_step(const double dt, const double cfl) const;
+
       static void
       declare(dealii::ParameterHandler &prm);
       void

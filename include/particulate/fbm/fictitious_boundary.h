@@ -61,10 +61,10 @@ namespace particulate {
       std::vector<std::pair<DofIndex, double>>
       constraint_values(const std::vector<Body> &bodies) const;
 
-      /** Number of nodes (of locally owned cells, all ranks) inside body
-       *  @p b: a measure of how well the mesh resolves it. */
-      unsigned long
-      n_nodes_inside(const unsigned int b) const;
+      /** Per body, the number of nodes (all ranks) inside it: a measure
+       *  of how well the mesh resolves it. Collective. */
+      std::vector<unsigned long>
+      n_nodes_inside(const unsigned int n_bodies) const;
 
       /** The body marking node @p i, or -1. */
       int
@@ -106,7 +106,6 @@ namespace particulate {
       /// per node its position (z = 0 in 2D) and its dim velocity DoFs
       std::vector<Eigen::Vector3d>             positions;
       std::vector<std::array<DofIndex, 3>>     node_dofs;
-      std::vector<bool>                        node_is_owned_cell_node;
       std::unique_ptr<geometry::PointHashGrid> grid;
       std::vector<int>                         node_body;
       std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> cells;
