@@ -73,9 +73,10 @@ main(int argc, char **argv)
                          full.force[0][1],
                          1e-6,
                          "vertical fluid force, half (mirrored) vs full");
-  checker.check(std::abs(full.force[0][0]) < 1e-6 * std::abs(full.force[0][1])
-                  && half.force[0][0] == 0.,
-                "no horizontal force on the mid-plane");
+  // the mirrored half run has no horizontal force by construction; the
+  // full run must find it from a symmetric flow
+  checker.check(std::abs(full.force[0][0]) < 1e-6 * std::abs(full.force[0][1]),
+                "full run: no horizontal force on the disk on the mid-plane");
   checker.check_relative(half_energy,
                          full_energy,
                          1e-6,
