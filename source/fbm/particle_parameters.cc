@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -166,6 +167,18 @@ namespace particulate {
                         "0",
                         Patterns::Double(0.),
                         "Coulomb friction coefficient of contacts [-].");
+      prm.declare_entry(
+        "Contact distance",
+        "auto",
+        Patterns::Anything(),
+        "Gap [m] below which the rigid-body engine's contact model keeps two "
+        "surfaces apart (particle-particle and particle-wall), or 'auto' for "
+        "the edge length of the smallest cell. A film thinner than about one "
+        "cell is not resolved by the mesh: its few free velocity nodes would "
+        "have to carry the whole squeeze flow, and the pressure, with the "
+        "force on the particle, spikes. The contact model stops the approach "
+        "there instead (thesis §5.1: collisions by the rigid-body methods, "
+        "not by repulsive forces). 0 lets the surfaces touch.");
       prm.declare_entry("Domain walls",
                         "all",
                         Patterns::Anything(),
@@ -209,7 +222,28 @@ namespace particulate {
       contact_solver         = prm.get("Contact solver");
       restitution            = prm.get_double("Restitution");
       friction               = prm.get_double("Friction");
-      const auto read_faces  = [&](const std::string &entry) {
+      {
+        const std::string text = Utilities::trim(prm.get("Contact distance"));
+        contact_distance.reset();
+        if (text != "auto")
+          {
+            double value = -1.;
+            try
+              {
+                std::size_t used = 0;
+                value            = std::stod(text, &used);
+                if (used != text.size())
+                  value = -1.;
+              }
+            catch (const std::exception &)
+              {}
+            if (!(value >= 0.) || !std::isfinite(value))
+              fail("Contact distance",
+                   "'" + text + "' is neither 'auto' nor a length >= 0 in m.");
+            contact_distance = value;
+          }
+      }
+      const auto read_faces = [&](const std::string &entry) {
         const std::string   text = Utilities::trim(prm.get(entry));
         std::array<bool, 6> faces;
         faces.fill(text == "all");
@@ -226,7 +260,7 @@ namespace particulate {
                        "'" + w + "' is not a face of this "
                          + std::to_string(dim)
                          + "D box; write 'all', 'none' or a list of x-, x+, "
-                            "y-, y+"
+                           "y-, y+"
                          + (dim == 3 ? ", z-, z+." : "."));
                 faces[it - names.begin()] = true;
               }

@@ -56,6 +56,18 @@ namespace particulate {
         return {lo, up};
       }
 
+      /** Shortest cell edge of the whole mesh (all ranks). */
+      template <int dim>
+      double
+      smallest_cell_edge(const Triangulation<dim> &tria, MPI_Comm comm)
+      {
+        double h = std::numeric_limits<double>::max();
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+            h = std::min(h, cell->minimum_vertex_distance());
+        return Utilities::MPI::min(h, comm);
+      }
+
       /** The particle's volume as the engine sees it (per unit depth in
        *  2D: a cylinder of length 1). */
       double
@@ -162,7 +174,10 @@ namespace particulate {
       world_p.gravity = Eigen::Vector3d::Zero(); // applied as (dM) g below
       world_p.contact_solver
         = rigid::contact_solver_type_from_string(particle_p.contact_solver);
-      world_p.substeps = particle_p.substeps;
+      world_p.substeps       = particle_p.substeps;
+      world_p.contact_offset = particle_p.contact_distance ?
+                                 *particle_p.contact_distance :
+                                 smallest_cell_edge(tria, communicator);
       rigid::World    world(world_p);
       rigid::Material material;
       material.name            = "particle";
@@ -221,8 +236,9 @@ namespace particulate {
             << flow.n_dofs() << " DoFs (" << flow.n_velocity_dofs()
             << " velocity + " << flow.n_dofs() - flow.n_velocity_dofs()
             << " pressure) on " << Utilities::MPI::n_mpi_processes(communicator)
-            << " rank(s); " << particle_p.n_particles() << " particle(s)"
-            << std::endl;
+            << " rank(s); " << particle_p.n_particles()
+            << " particle(s); contact distance " << world_p.contact_offset
+            << " m" << std::endl;
 
       // --- output --------------------------------------------------------
       const std::string &dir = flow_p.output.directory;

@@ -36,6 +36,8 @@ namespace particulate::rigid {
       fail("'substeps' must be at least 1.");
     if (!(contact_margin >= 0.))
       fail("the contact margin must be >= 0 m (0 selects it automatically).");
+    if (!(contact_offset >= 0.) || !std::isfinite(contact_offset))
+      fail("the contact offset must be a finite length >= 0 m.");
     if (!(fluid_density >= 0.))
       fail("the fluid density must be >= 0 kg/m^3.");
     if (!(dem_steps_per_contact >= 1.))
@@ -246,7 +248,7 @@ namespace particulate::rigid {
             p.radius       = r;
             p.plane_normal = b.orientation * hs.normal;
             p.plane_offset = hs.offset + p.plane_normal.dot(b.position)
-                             + 0.5 * margin_
+                             + 0.5 * (margin_ + parameters_.contact_offset)
                              + horizon * b.linear_velocity.norm() + skin_half;
             continue;
           }
@@ -258,7 +260,8 @@ namespace particulate::rigid {
                            horizon
                              * (2. * b.linear_velocity.norm()
                                 + b.angular_velocity.norm() * r + g * horizon);
-        p.radius = r + 0.5 * margin_ + skin_half + travel;
+        p.radius = r + 0.5 * (margin_ + parameters_.contact_offset) + skin_half
+                   + travel;
       }
     grid_.update(proxies_);
     grid_.find_pairs(pairs_);
@@ -275,7 +278,10 @@ namespace particulate::rigid {
     for (ContactEdge &e : graph_.edges())
       {
         const RigidBody &a = bodies_[e.manifold.a], &b = bodies_[e.manifold.b];
-        double           margin = margin_;
+        // Detection works on the true shapes; the offset is taken off the
+        // gaps afterwards, so the solvers see the inflated shapes.
+        const double offset = parameters_.contact_offset;
+        double       margin = margin_ + offset;
         if (!dem)
           {
             // Speculative margin: how much the gap may close in this step.
@@ -297,9 +303,9 @@ namespace particulate::rigid {
             const double ra = a.bounding_radius(), rb = b.bounding_radius();
             const Eigen::Vector3d d    = b.position - a.position;
             const double          dist = d.norm();
-            const double          gap  = dist - ra - rb;
+            const double          gap  = dist - ra - rb - offset;
             auto                 &pts  = e.manifold.points;
-            if (gap > margin)
+            if (gap > margin - offset)
               {
                 pts.clear();
                 e.state = EdgeState::proximity;
@@ -315,7 +321,7 @@ namespace particulate::rigid {
             else
               e.state = EdgeState::persistent_contact;
             ContactPoint &c = pts[0];
-            c.position      = a.position + (ra + 0.5 * gap) * n;
+            c.position      = a.position + (ra + 0.5 * (gap + offset)) * n;
             c.normal        = n;
             c.distance      = gap;
             c.local_a       = a.orientation.conjugate() * (ra * n);
@@ -323,6 +329,8 @@ namespace particulate::rigid {
           }
         old.swap(e.manifold.points);
         NarrowPhase::collide(a, b, margin, e);
+        for (ContactPoint &c : e.manifold.points)
+          c.distance -= offset;
         const double rmin = std::min(a.bounding_radius(), b.bounding_radius());
         ContactGraph::warm_start(e, old, 0.05 * rmin);
       }

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,9 @@ namespace particulate {
       std::string contact_solver = "sequential impulses";
       double      restitution    = 0.;
       double      friction       = 0.;
+      /// film thickness [m] kept between surfaces by the contact model;
+      /// empty: one cell of the finest mesh level (see 'Contact distance')
+      std::optional<double> contact_distance;
       /// faces of the mesh's bounding box that are walls for contacts, in
       /// the order x-, x+, y-, y+, z-, z+
       std::array<bool, 6> walls    = {{true, true, true, true, true, true}};

@@ -28,6 +28,13 @@ namespace particulate::rigid {
     /** Contact margin in m: gaps below it give contact points. 0 selects 2 %
      * of the smallest bounding radius. */
     double contact_margin = 0.;
+    /** Contact offset in m: surfaces closer than this count as touching,
+     * i.e. every contact model acts on the gap minus the offset, as if each
+     * shape were inflated by half of it (0: the shapes themselves). A fluid
+     * coupling sets it to the film thickness its mesh can still resolve, so
+     * that the contact model, not an unresolved squeeze film, stops the
+     * approach. */
+    double contact_offset = 0.;
     /** Density in kg/m^3 of a fluid the bodies are fully immersed in; adds
      * the buoyancy -rho_f V g. Leave 0 when the fluid solver's pressure
      * already contains the hydrostatic part. */
@@ -161,7 +168,8 @@ namespace particulate::rigid {
     double
     kinetic_energy() const;
     /** Largest penetration depth in m among the current contact points (0
-     * if none overlaps). */
+     * if none overlaps), measured against the contact offset: with an offset
+     * it is how far the surfaces came closer than the offset. */
     double
     max_penetration() const;
     /** FNV-1a hash of the bit patterns of all positions, orientations and
