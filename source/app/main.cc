@@ -26,6 +26,12 @@ namespace {
            "mpirun -np N)\n"
            "  particulate --validate CASE.prm    check a parameter file and "
            "exit\n"
+           "  particulate --restart CASE.prm     continue a particulate flow "
+           "run from the\n"
+           "                                     checkpoint in its output "
+           "folder (subsection\n"
+           "                                     Checkpoint; same number of "
+           "ranks)\n"
            "  particulate --print-parameters     list every parameter with "
            "its documentation,\n"
            "                                     default and valid values\n"
@@ -130,9 +136,11 @@ main(int argc, char **argv)
         }
 
       const bool        validate_only = args[0] == "--validate";
+      const bool        restart       = args[0] == "--restart";
+      const bool        with_option   = validate_only || restart;
       const std::string filename
-        = validate_only && args.size() > 1 ? args[1] : args[0];
-      if (filename.rfind("--", 0) == 0 || (validate_only && args.size() < 2))
+        = with_option && args.size() > 1 ? args[1] : args[0];
+      if (filename.rfind("--", 0) == 0 || (with_option && args.size() < 2))
         {
           if (root)
             {
@@ -143,9 +151,16 @@ main(int argc, char **argv)
           return 1;
         }
 
-      const fbm::ParticulateFlowParameters all = read_case(prm, filename);
-      const fluid::FlowCaseParameters     &parameters = all.flow;
-      const unsigned int dim = parameters.simulation.dimension;
+      fbm::ParticulateFlowParameters all = read_case(prm, filename);
+      all.restart                        = restart;
+      if (restart
+          && all.flow.simulation.type
+               != core::SimulationParameters::Type::particulate_flow)
+        throw std::runtime_error(filename
+                                 + ": --restart continues 'particulate flow' "
+                                   "runs; this case is a 'fluid' run.");
+      const fluid::FlowCaseParameters &parameters = all.flow;
+      const unsigned int               dim = parameters.simulation.dimension;
       if (dim == 2)
         check_case<2>(parameters, filename, comm);
       else

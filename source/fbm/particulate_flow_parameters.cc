@@ -14,6 +14,7 @@ namespace particulate {
     {
       fluid::FlowCaseParameters::declare(prm);
       ParticleParameters::declare(prm);
+      core::CheckpointParameters::declare(prm);
     }
 
 
@@ -36,7 +37,14 @@ namespace particulate {
         {
           throw std::runtime_error(filename + ": " + e.what());
         }
+      checkpoint.parse(prm);
       // never ignore input silently
+      if (flow.simulation.type == core::SimulationParameters::Type::fluid
+          && checkpoint.enabled())
+        throw std::runtime_error(
+          filename
+          + ": subsection 'Checkpoint' asks for checkpoints, which only "
+            "'particulate flow' runs write so far. Set both intervals to 0.");
       if (flow.simulation.type == core::SimulationParameters::Type::fluid
           && particles.n_particles() > 0)
         throw std::runtime_error(

@@ -1,3 +1,4 @@
+#include <particulate/core/checkpoint.h>
 #include <particulate/core/mesh.h>
 #include <particulate/core/progress_reporter.h>
 #include <particulate/core/time_series_writer.h>
@@ -203,6 +204,9 @@ namespace particulate {
                                        particle_p.positions[i],
                                        Eigen::Quaterniond::Identity(),
                                        !free));
+          // locked inside the engine, so that contacts cannot spend their
+          // impulse on a rotation the coupling would discard
+          world.body(ids.back()).lock_rotation(particle_p.locked_rotation);
           if (free && !particle_p.velocities.empty())
             world.body(ids.back()).linear_velocity = particle_p.velocities[i];
         }
@@ -240,31 +244,6 @@ namespace particulate {
             << " particle(s); contact distance " << world_p.contact_offset
             << " m" << std::endl;
 
-      // --- output --------------------------------------------------------
-      const std::string &dir = flow_p.output.directory;
-      std::vector<std::unique_ptr<core::TimeSeriesWriter>> particle_series;
-      for (unsigned int i = 0; i < ids.size(); ++i)
-        particle_series.push_back(std::make_unique<core::TimeSeriesWriter>(
-          dir + "/particle_" + std::to_string(i) + ".dat",
-          std::vector<std::string>{
-            "time",        "x",    "y",       "z",       "u",
-            "v",           "w",    "omega_x", "omega_y", "omega_z",
-            "F_x",         "F_y",  "F_z",     "T_x",     "T_y",
-            "T_z",         "Fc_x", "Fc_y",    "Fc_z",    "kinetic_energy",
-            "nodes_inside"},
-          communicator));
-      core::TimeSeriesWriter flow_series(dir + "/flow.dat",
-                                         {"time",
-                                          "fluid_kinetic_energy",
-                                          "particle_kinetic_energy",
-                                          "nonlinear_iterations",
-                                          "linear_iterations",
-                                          "time_step"},
-                                         communicator);
-      fluid::FlowOutput<dim> flow_output(dir, "flow");
-      const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
-      rigid::VtpWriter body_output(dir + "/particles");
-
       // --- state ---------------------------------------------------------
       const unsigned int           n = ids.size();
       std::vector<Eigen::Vector3d> acceleration(n, Eigen::Vector3d::Zero()),
@@ -274,6 +253,128 @@ namespace particulate {
       summary.n_dofs = flow.n_dofs();
       summary.max_speed.assign(n, 0.);
       summary.time_of_max_speed.assign(n, 0.);
+      double       t    = 0.;
+      double       dt   = time_p.time_step;
+      unsigned int step = 0;
+
+      const std::string     &dir = flow_p.output.directory;
+      fluid::FlowOutput<dim> flow_output(dir, "flow");
+      rigid::VtpWriter       body_output(dir + "/particles");
+      const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+
+      // --- checkpoint ----------------------------------------------------
+      // Everything the next step reads; the rest (mesh, constraints,
+      // covered nodes) follows from the case file and the bodies.
+      const core::Checkpoint checkpoint(dir, communicator);
+      using Series            = std::vector<std::pair<double, std::string>>;
+      const auto write_series = [](std::ostream &out, const Series &series) {
+        core::write_binary<unsigned long>(out, series.size());
+        for (const auto &[time, file] : series)
+          {
+            core::write_binary(out, time);
+            core::write_binary_string(out, file);
+          }
+      };
+      const auto read_series = [](std::istream &in) {
+        Series series(core::read_binary<unsigned long>(in));
+        for (auto &[time, file] : series)
+          {
+            time = core::read_binary<double>(in);
+            file = core::read_binary_string(in);
+          }
+        return series;
+      };
+      const auto save_checkpoint = [&]() {
+        TimerOutput::Scope scope(timer, "checkpoint");
+        checkpoint.save(
+          [&](std::ostream &out) {
+            core::write_binary(out, t);
+            core::write_binary(out, dt);
+            core::write_binary<unsigned long>(out, step);
+            core::write_binary<unsigned long>(out, n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                core::write_binary(out, acceleration[i]);
+                core::write_binary(out, angular_acceleration[i]);
+                core::write_binary(out, loads[i].force);
+                core::write_binary(out, loads[i].torque);
+                core::write_binary(out, summary.max_speed[i]);
+                core::write_binary(out, summary.time_of_max_speed[i]);
+              }
+            flow.save_state(out);
+            world.save_state(out);
+            write_series(out, flow_output.written());
+            write_series(out, body_output.written());
+          },
+          t,
+          step);
+        // the continued run rebuilds its preconditioners here, as a
+        // restarted one must: both then compute the same numbers
+        flow.reset_preconditioners();
+      };
+      if (parameters.restart)
+        {
+          if (time_p.scheme == core::TimeParameters::Scheme::steady)
+            throw std::runtime_error(
+              parameter_file
+              + ": --restart continues time-dependent runs; this case is "
+                "steady.");
+          checkpoint.load([&](std::istream &in) {
+            t    = core::read_binary<double>(in);
+            dt   = core::read_binary<double>(in);
+            step = core::read_binary<unsigned long>(in);
+            if (core::read_binary<unsigned long>(in) != n)
+              throw std::runtime_error(
+                "it has another number of particles than 'Positions'");
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                acceleration[i] = core::read_binary<Eigen::Vector3d>(in);
+                angular_acceleration[i]
+                  = core::read_binary<Eigen::Vector3d>(in);
+                loads[i].force       = core::read_binary<Eigen::Vector3d>(in);
+                loads[i].torque      = core::read_binary<Eigen::Vector3d>(in);
+                summary.max_speed[i] = core::read_binary<double>(in);
+                summary.time_of_max_speed[i] = core::read_binary<double>(in);
+              }
+            flow.load_state(in);
+            world.load_state(in);
+            flow_output.resume(read_series(in));
+            body_output.resume(read_series(in));
+          });
+          pcout << "Restarting from " << checkpoint.directory()
+                << " at t = " << t << " s (step " << step << ")" << std::endl;
+        }
+
+      // --- output --------------------------------------------------------
+      // a restart continues the series, without the rows that the cut-off
+      // run wrote after its checkpoint
+      const auto series_file = [&](const std::string &name) {
+        const std::string file = dir + "/" + name + ".dat";
+        if (parameters.restart && root)
+          core::truncate_time_series(file, t);
+        return file;
+      };
+      std::vector<std::unique_ptr<core::TimeSeriesWriter>> particle_series;
+      for (unsigned int i = 0; i < ids.size(); ++i)
+        particle_series.push_back(std::make_unique<core::TimeSeriesWriter>(
+          series_file("particle_" + std::to_string(i)),
+          std::vector<std::string>{
+            "time",        "x",    "y",       "z",       "u",
+            "v",           "w",    "omega_x", "omega_y", "omega_z",
+            "F_x",         "F_y",  "F_z",     "T_x",     "T_y",
+            "T_z",         "Fc_x", "Fc_y",    "Fc_z",    "kinetic_energy",
+            "nodes_inside"},
+          communicator,
+          parameters.restart));
+      core::TimeSeriesWriter flow_series(series_file("flow"),
+                                         {"time",
+                                          "fluid_kinetic_energy",
+                                          "particle_kinetic_energy",
+                                          "nonlinear_iterations",
+                                          "linear_iterations",
+                                          "time_step"},
+                                         communicator,
+                                         parameters.restart);
 
       const auto true_inertia_world = [&](const rigid::RigidBody &b) {
         return Eigen::Matrix3d(b.inertia_world() * (rho_p / rho_engine));
@@ -352,12 +453,9 @@ namespace particulate {
           interface.constraint_values(interface_bodies));
       };
 
-      double                 t    = 0.;
-      double                 dt   = time_p.time_step;
-      unsigned int           step = 0;
       core::ProgressReporter progress(
         pcout.get_stream(),
-        0.,
+        t,
         time_p.scheme == core::TimeParameters::Scheme::steady ?
           1. :
           time_p.end_time);
@@ -375,8 +473,29 @@ namespace particulate {
       };
 
       impose_particle_velocities();
-      record(0., dt, fluid::SolveStatistics());
-      write_fields(0, 0.);
+      if (!parameters.restart)
+        {
+          record(0., dt, fluid::SolveStatistics());
+          write_fields(0, 0.);
+        }
+      const auto &checkpoint_p    = parameters.checkpoint;
+      double      last_checkpoint = 0.; // wall seconds
+      const auto  checkpoint_due  = [&](const bool last) {
+        if (!checkpoint_p.enabled())
+          return false;
+        // rank 0's clock decides, so that all ranks agree
+        const double minutes
+          = Utilities::MPI::broadcast(communicator,
+                                      progress.elapsed_seconds()
+                                        - last_checkpoint,
+                                      0)
+            / 60.;
+        return last
+               || (checkpoint_p.step_interval > 0
+                   && step % checkpoint_p.step_interval == 0)
+               || (checkpoint_p.wall_minutes > 0.
+                   && minutes >= checkpoint_p.wall_minutes);
+      };
 
       if (time_p.scheme == core::TimeParameters::Scheme::steady)
         {
@@ -468,6 +587,19 @@ namespace particulate {
                       = (b.linear_velocity - old_velocity[i]) / dt;
                     angular_acceleration[i]
                       = (b.angular_velocity - old_angular_velocity[i]) / dt;
+                    // A contact that stops the particle stops its added
+                    // mass too. Fed back as m_a a_old, that deceleration
+                    // would throw the particle off the wall next step (a
+                    // bounce at restitution 0): the lag keeps no
+                    // acceleration away from a touching surface.
+                    for (const auto &f : world.contact_forces(ids[i]))
+                      if (f.force.norm() > 0.)
+                        {
+                          const Eigen::Vector3d n = f.force.normalized();
+                          const double          a = acceleration[i].dot(n);
+                          if (a > 0.)
+                            acceleration[i] -= a * n;
+                        }
                   }
               }
               t += dt;
@@ -484,6 +616,11 @@ namespace particulate {
                 progress.report(step, t, dt, counts(stats));
               if (time_p.adaptive)
                 dt = time_p.next_time_step(dt, flow.cfl_number(dt));
+              if (checkpoint_due(last))
+                {
+                  save_checkpoint();
+                  last_checkpoint = progress.elapsed_seconds();
+                }
             }
         }
 

@@ -1,5 +1,7 @@
 #include <particulate/rigid/rigid_body.h>
 
+#include <Eigen/LU>
+
 #include <limits>
 #include <stdexcept>
 
@@ -59,7 +61,38 @@ namespace particulate::rigid {
   RigidBody::inverse_inertia_world() const
   {
     const Eigen::Matrix3d R = rotation();
-    return R * inverse_inertia_.asDiagonal() * R.transpose();
+    if (fixed_
+        || !(rotation_locked_[0] || rotation_locked_[1] || rotation_locked_[2]))
+      return R * inverse_inertia_.asDiagonal() * R.transpose();
+    // invert the free block of I_w: locked rows and columns become those
+    // of the identity for the inversion and zero afterwards
+    Eigen::Matrix3d I = inertia_world();
+    for (int a = 0; a < 3; ++a)
+      if (rotation_locked_[a])
+        {
+          I.row(a).setZero();
+          I.col(a).setZero();
+          I(a, a) = 1.;
+        }
+    Eigen::Matrix3d inverse = I.inverse();
+    for (int a = 0; a < 3; ++a)
+      if (rotation_locked_[a])
+        {
+          inverse.row(a).setZero();
+          inverse.col(a).setZero();
+        }
+    return inverse;
+  }
+
+
+
+  void
+  RigidBody::lock_rotation(const std::array<bool, 3> &axes)
+  {
+    rotation_locked_ = axes;
+    for (int a = 0; a < 3; ++a)
+      if (axes[a])
+        angular_velocity[a] = 0.;
   }
 
 

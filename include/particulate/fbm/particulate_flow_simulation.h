@@ -1,6 +1,7 @@
 #ifndef particulate_fbm_particulate_flow_simulation_h
 #define particulate_fbm_particulate_flow_simulation_h
 
+#include <particulate/core/checkpoint.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/fluid/flow_simulation.h>
 
@@ -16,8 +17,11 @@ namespace particulate {
     /** Everything a `Simulation / Type = particulate flow` case reads. */
     struct ParticulateFlowParameters
     {
-      fluid::FlowCaseParameters flow;
-      ParticleParameters        particles;
+      fluid::FlowCaseParameters  flow;
+      ParticleParameters         particles;
+      core::CheckpointParameters checkpoint;
+      /// continue from the checkpoint in the output folder (--restart)
+      bool restart = false;
 
       /** Declare every entry a case file may set. */
       static void
@@ -63,6 +67,12 @@ namespace particulate {
      *     domain walls are fixed half-spaces.
      * The explicit coupling is stabilised for light particles by an
      * added-mass correction (doc/fbm.md).
+     *
+     * With subsection `Checkpoint` set, the run saves its state (fluid
+     * solution, bodies with their contact cache, the coupling's added-mass
+     * accelerations and loads, time step, output series) into
+     * `<output>/checkpoint/`; with `restart` it continues from there and
+     * computes the same numbers as the uninterrupted run.
      */
     template <int dim>
     class ParticulateFlowSimulation

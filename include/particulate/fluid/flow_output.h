@@ -27,6 +27,20 @@ namespace particulate {
             const unsigned int       step,
             const double             time);
 
+      /** The series written so far (time, file), for a checkpoint. */
+      const std::vector<std::pair<double, std::string>> &
+      written() const
+      {
+        return records;
+      }
+      /** Continues the series of a restarted run: the files listed in the
+       * checkpoint; files written after it are left out of the next .pvd. */
+      void
+      resume(std::vector<std::pair<double, std::string>> series)
+      {
+        records = std::move(series);
+      }
+
     private:
       std::string                                 directory, basename;
       std::vector<std::pair<double, std::string>> records;

@@ -134,6 +134,31 @@ namespace particulate {
       void
       set_mesh_velocity(const BlockVector &mesh_velocity);
 
+      /**
+       * Checkpoint: writes what the next advance() depends on, this rank's
+       * part (locally owned entries of the current solution and of the
+       * previous stage's start value used for extrapolation, and that
+       * stage's time). The mesh and DoF numbering are not written: a
+       * restart rebuilds them from the case file on the same number of
+       * ranks, and load_state() checks that they match.
+       */
+      void
+      save_state(std::ostream &out) const;
+
+      /** Reads what save_state() wrote (after setup_dofs()). Throws
+       *  std::runtime_error when the DoF layout differs. */
+      void
+      load_state(std::istream &in);
+
+      /**
+       * Drops the kept preconditioners (velocity AMG, Schur complement
+       * approximation); the next solve rebuilds them from its matrix. A
+       * run does this whenever it saves a checkpoint, so that it and a run
+       * restarted from that checkpoint compute the same numbers.
+       */
+      void
+      reset_preconditioners();
+
       /** Largest |u| dt / h over the locally owned cells, all ranks. */
       double
       cfl_number(const double time_step) const;

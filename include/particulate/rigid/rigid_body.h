@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <memory>
 
 namespace particulate::rigid {
@@ -161,9 +162,20 @@ namespace particulate::rigid {
     /** Inertia tensor in the world frame, R I R^T (thesis eq. 4.30), kg m^2. */
     Eigen::Matrix3d
     inertia_world() const;
-    /** Inverse inertia tensor in the world frame (zero for fixed bodies). */
+    /** Inverse inertia tensor in the world frame (zero for fixed bodies).
+     * With locked rotation axes it is the inverse of the inertia restricted
+     * to the free axes, zero along the locked ones, so that no torque or
+     * contact impulse turns the body about them. */
     Eigen::Matrix3d
     inverse_inertia_world() const;
+
+    /** Forbids rotation about the world axes flagged in @p axes (x, y, z),
+     * e.g. x and y for a disk in a planar (2D) simulation: contacts away
+     * from the body's mid-plane then cannot tilt it, and the whole impulse
+     * goes into the in-plane motion. The angular velocity's components
+     * about these axes are set to zero. */
+    void
+    lock_rotation(const std::array<bool, 3> &axes);
 
     /** World point of the body-frame point @p p_body. */
     Eigen::Vector3d
@@ -203,6 +215,7 @@ namespace particulate::rigid {
     angular_momentum() const;
 
   private:
+    std::array<bool, 3>          rotation_locked_ = {{false, false, false}};
     std::shared_ptr<const Shape> shape_;
     unsigned int                 material_;
     bool                         fixed_;

@@ -27,6 +27,20 @@ namespace particulate::rigid {
     std::string
     write(const World &world);
 
+    /** The series written so far (time, file), for a checkpoint. */
+    const std::vector<std::pair<double, std::string>> &
+    written() const
+    {
+      return series_;
+    }
+    /** Continues the series of a restarted run: the files listed in the
+     * checkpoint; files written after it are left out of the next .pvd. */
+    void
+    resume(std::vector<std::pair<double, std::string>> series)
+    {
+      series_ = std::move(series);
+    }
+
   private:
     std::string                                 prefix_;
     std::vector<std::pair<double, std::string>> series_;

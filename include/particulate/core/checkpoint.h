@@ -1,0 +1,143 @@
+#ifndef particulate_core_checkpoint_h
+#define particulate_core_checkpoint_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <istream>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <mpi.h>
+
+namespace particulate {
+  namespace core {
+    /** Subsection `Checkpoint`: when a run saves its state. */
+    struct CheckpointParameters
+    {
+      /// save every this many time steps (0: not by step count)
+      unsigned int step_interval = 0;
+      /// save when this many wall-clock minutes passed since the last save
+      /// (0: not by wall time)
+      double wall_minutes = 0.;
+
+      static void
+      declare(dealii::ParameterHandler &prm);
+      void
+      parse(dealii::ParameterHandler &prm);
+
+      bool
+      enabled() const
+      {
+        return step_interval > 0 || wall_minutes > 0.;
+      }
+    };
+
+    /**
+     * Checkpoint files of a distributed run in `<output>/checkpoint/`: one
+     * binary file per rank (`rank-<r>.bin`, the rank's part of the state)
+     * and `info.txt` (time, step, number of ranks, for people). A new
+     * checkpoint is written into `checkpoint.new/` and swapped in only when
+     * every rank has finished writing, so a run cut off while saving keeps
+     * its previous checkpoint.
+     */
+    class Checkpoint
+    {
+    public:
+      /** @param output_directory The run's 'Directory' of 'Output'. */
+      Checkpoint(const std::string &output_directory, MPI_Comm comm);
+
+      /**
+       * Collective. Calls @p write_rank_data with this rank's file and
+       * swaps the new checkpoint in. @p time and @p step go to info.txt.
+       */
+      void
+      save(const std::function<void(std::ostream &)> &write_rank_data,
+           const double                               time,
+           const unsigned long                        step) const;
+
+      /** Whether a complete checkpoint exists (collective). */
+      bool
+      exists() const;
+
+      /**
+       * Collective. Opens this rank's file of the last checkpoint, checks
+       * its header and that it was written by as many ranks as run now, and
+       * hands it to @p read_rank_data. Throws std::runtime_error naming the
+       * folder and what to do.
+       */
+      void
+      load(const std::function<void(std::istream &)> &read_rank_data) const;
+
+      /** The folder of the current checkpoint. */
+      std::string
+      directory() const;
+
+    private:
+      std::string output_directory;
+      MPI_Comm    communicator;
+    };
+
+    /** Writes the bytes of a trivially copyable value. */
+    template <typename T>
+    void
+    write_binary(std::ostream &out, const T &value)
+    {
+      out.write(reinterpret_cast<const char *>(&value), sizeof(T));
+    }
+
+    /** Reads what write_binary() wrote; throws on a short file. */
+    template <typename T>
+    T
+    read_binary(std::istream &in)
+    {
+      T value;
+      in.read(reinterpret_cast<char *>(&value), sizeof(T));
+      if (!in)
+        throw std::runtime_error(
+          "the checkpoint file ends early (it is truncated or from another "
+          "version of Particulate)");
+      return value;
+    }
+
+    /** A vector as its length and its elements. */
+    template <typename T>
+    void
+    write_binary_vector(std::ostream &out, const std::vector<T> &values)
+    {
+      write_binary<unsigned long>(out, values.size());
+      for (const T &v : values)
+        write_binary(out, v);
+    }
+
+    template <typename T>
+    std::vector<T>
+    read_binary_vector(std::istream &in)
+    {
+      std::vector<T> values(read_binary<unsigned long>(in));
+      for (T &v : values)
+        v = read_binary<T>(in);
+      return values;
+    }
+
+    /** A string as its length and its characters. */
+    void
+    write_binary_string(std::ostream &out, const std::string &text);
+    std::string
+    read_binary_string(std::istream &in);
+
+    /**
+     * Restart of a time series: keeps the header and the rows of
+     * @p filename whose first column (the time) is at most @p time, and
+     * drops the rows a cut-off run wrote after its last checkpoint. Call on
+     * one rank.
+     */
+    void
+    truncate_time_series(const std::string &filename, const double time);
+  } // namespace core
+} // namespace particulate
+
+#endif
