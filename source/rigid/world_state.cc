@@ -1,4 +1,6 @@
 // Checkpoint of a World's dynamic state (World::save_state/load_state).
+// The byte helpers mirror core::write_binary/read_binary on purpose: the
+// rigid module depends on Eigen only, not on the deal.II-based core.
 #include <particulate/rigid/world.h>
 
 #include <istream>
