@@ -208,6 +208,36 @@ namespace particulate {
 
 
     void
+    write_binary_series(
+      std::ostream                                      &out,
+      const std::vector<std::pair<double, std::string>> &series)
+    {
+      write_binary<unsigned long>(out, series.size());
+      for (const auto &[time, file] : series)
+        {
+          write_binary(out, time);
+          write_binary_string(out, file);
+        }
+    }
+
+
+
+    std::vector<std::pair<double, std::string>>
+    read_binary_series(std::istream &in)
+    {
+      std::vector<std::pair<double, std::string>> series(
+        read_binary<unsigned long>(in));
+      for (auto &[time, file] : series)
+        {
+          time = read_binary<double>(in);
+          file = read_binary_string(in);
+        }
+      return series;
+    }
+
+
+
+    void
     truncate_time_series(const std::string &filename, const double time)
     {
       std::ifstream in(filename);

@@ -230,12 +230,9 @@ namespace particulate {
             double value = -1.;
             try
               {
-                std::size_t used = 0;
-                value            = std::stod(text, &used);
-                if (used != text.size())
-                  value = -1.;
+                value = Utilities::string_to_double(text);
               }
-            catch (const std::exception &)
+            catch (...)
               {}
             if (!(value >= 0.) || !std::isfinite(value))
               fail("Contact distance",

@@ -266,25 +266,7 @@ namespace particulate {
       // Everything the next step reads; the rest (mesh, constraints,
       // covered nodes) follows from the case file and the bodies.
       const core::Checkpoint checkpoint(dir, communicator);
-      using Series            = std::vector<std::pair<double, std::string>>;
-      const auto write_series = [](std::ostream &out, const Series &series) {
-        core::write_binary<unsigned long>(out, series.size());
-        for (const auto &[time, file] : series)
-          {
-            core::write_binary(out, time);
-            core::write_binary_string(out, file);
-          }
-      };
-      const auto read_series = [](std::istream &in) {
-        Series series(core::read_binary<unsigned long>(in));
-        for (auto &[time, file] : series)
-          {
-            time = core::read_binary<double>(in);
-            file = core::read_binary_string(in);
-          }
-        return series;
-      };
-      const auto save_checkpoint = [&]() {
+      const auto             save_checkpoint = [&]() {
         TimerOutput::Scope scope(timer, "checkpoint");
         checkpoint.save(
           [&](std::ostream &out) {
@@ -303,8 +285,8 @@ namespace particulate {
               }
             flow.save_state(out);
             world.save_state(out);
-            write_series(out, flow_output.written());
-            write_series(out, body_output.written());
+            core::write_binary_series(out, flow_output.written());
+            core::write_binary_series(out, body_output.written());
           },
           t,
           step);
@@ -338,8 +320,8 @@ namespace particulate {
               }
             flow.load_state(in);
             world.load_state(in);
-            flow_output.resume(read_series(in));
-            body_output.resume(read_series(in));
+            flow_output.resume(core::read_binary_series(in));
+            body_output.resume(core::read_binary_series(in));
           });
           pcout << "Restarting from " << checkpoint.directory()
                 << " at t = " << t << " s (step " << step << ")" << std::endl;

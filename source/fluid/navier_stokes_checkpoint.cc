@@ -73,7 +73,6 @@ namespace particulate {
       BlockVector owned = make_owned_vector();
       read_owned(in, owned, owned_partitioning);
       solution              = owned;
-      old_solution          = solution;
       has_previous_solution = core::read_binary<bool>(in);
       previous_time         = core::read_binary<double>(in);
       if (has_previous_solution)

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <mpi.h>
@@ -128,6 +129,14 @@ namespace particulate {
     write_binary_string(std::ostream &out, const std::string &text);
     std::string
     read_binary_string(std::istream &in);
+
+    /** The (time, file) list behind a .pvd series. */
+    void
+    write_binary_series(
+      std::ostream                                      &out,
+      const std::vector<std::pair<double, std::string>> &series);
+    std::vector<std::pair<double, std::string>>
+    read_binary_series(std::istream &in);
 
     /**
      * Restart of a time series: keeps the header and the rows of
