@@ -1,0 +1,102 @@
+#include <particulate/deformation/deformation_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+namespace particulate {
+  namespace deformation {
+    using namespace dealii;
+
+    void
+    DeformationParameters::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh deformation");
+      prm.declare_entry(
+        "Method",
+        "none",
+        Patterns::Selection(
+          "none|laplace-kappa|laplace-alpha|pde-basic|pde-robust"),
+        "r-adaptivity (thesis §5.5-5.7): laplace-kappa pulls vertices towards "
+        "the bodies by weighted Laplacian smoothing, level by level; "
+        "laplace-alpha also puts vertices onto the surfaces; pde-basic and "
+        "pde-robust solve Grajewski's deformation problem (one step, or as "
+        "many blended steps as the monitor needs).");
+      prm.declare_entry("Width",
+                        "0.1",
+                        Patterns::Double(0.),
+                        "[m] Distance from the body surfaces within which the "
+                        "mesh is refined: the reach of the smoothing weight, "
+                        "and the ramp of the PDE monitor f = min{1, max{|d| / "
+                        "Width, Smallest cell ratio}}.");
+      prm.declare_entry(
+        "Peak weight",
+        "8",
+        Patterns::Double(1.),
+        "Laplace-kappa/alpha: smoothing weight of a vertex on a "
+        "surface (1 at distance Width and beyond).");
+      prm.declare_entry("Relaxation",
+                        "0.5",
+                        Patterns::Double(0., 1.),
+                        "omega of the weighted smoother, eq. 5.27.");
+      prm.declare_entry("Sweeps per level",
+                        "4",
+                        Patterns::List(Patterns::Integer(0), 1),
+                        "Smoothing sweeps on each level, coarsest first; the "
+                        "last entry repeats for the finer levels.");
+      prm.declare_entry("Smallest cell ratio",
+                        "0.1",
+                        Patterns::Double(0., 1.),
+                        "PDE methods: epsilon, the smallest over the largest "
+                        "target cell size.");
+      prm.declare_entry("ODE steps",
+                        "20",
+                        Patterns::Integer(1),
+                        "PDE methods: Runge-Kutta steps of the vertex paths "
+                        "(eq. 5.22).");
+      prm.declare_entry("Robust step ratio",
+                        "2",
+                        Patterns::Double(1.01),
+                        "pde-robust: the target cell size changes by at most "
+                        "this factor per adaptation step.");
+      prm.declare_entry("Projection range",
+                        "0.45",
+                        Patterns::Double(0., 0.5),
+                        "laplace-alpha: coarse vertices closer to a surface "
+                        "than this fraction of their shortest edge are put "
+                        "onto it.");
+      prm.declare_entry("Minimum cell quality",
+                        "0.2",
+                        Patterns::Double(0., 1.),
+                        "No move may leave a cell with a scaled Jacobian below "
+                        "this (or below its value before the move): such moves "
+                        "are cut back.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    DeformationParameters::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh deformation");
+      const std::string m = prm.get("Method");
+      method              = m == "laplace-kappa" ? Method::laplace_kappa :
+                            m == "laplace-alpha" ? Method::laplace_alpha :
+                            m == "pde-basic"     ? Method::pde_basic :
+                            m == "pde-robust"    ? Method::pde_robust :
+                                                   Method::none;
+      width               = prm.get_double("Width");
+      peak_weight         = prm.get_double("Peak weight");
+      relaxation          = prm.get_double("Relaxation");
+      sweeps_per_level.clear();
+      for (const int s : Utilities::string_to_int(
+             Utilities::split_string_list(prm.get("Sweeps per level"))))
+        sweeps_per_level.push_back(s);
+      smallest_cell_ratio = prm.get_double("Smallest cell ratio");
+      ode_steps           = prm.get_integer("ODE steps");
+      step_ratio          = prm.get_double("Robust step ratio");
+      projection_range    = prm.get_double("Projection range");
+      min_quality         = prm.get_double("Minimum cell quality");
+      prm.leave_subsection();
+    }
+  } // namespace deformation
+} // namespace particulate

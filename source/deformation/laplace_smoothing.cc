@@ -1,0 +1,238 @@
+#include <particulate/deformation/laplace_smoothing.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace particulate {
+  namespace deformation {
+    using namespace dealii;
+
+    template <int dim>
+    unsigned int
+    smoothing_sweep(const VertexHierarchy<dim> &hierarchy,
+                    const unsigned int          level,
+                    const std::vector<double>  &weight,
+                    const std::vector<bool>    &pinned,
+                    const SmoothingSettings    &settings,
+                    std::vector<Point<dim>>    &positions)
+    {
+      std::vector<Point<dim>> moved = positions;
+      for (const unsigned int v : hierarchy.vertices_on_level(level))
+        {
+          if (pinned[v] || hierarchy.is_fixed(v))
+            continue;
+          Point<dim> average;
+          double     sum = 0.;
+          for (const unsigned int j : hierarchy.neighbours(level, v))
+            {
+              average += weight[j] * positions[j];
+              sum += weight[j];
+            }
+          const Tensor<1, dim> step
+            = settings.relaxation * (average / sum - positions[v]);
+          moved[v] = positions[v] + hierarchy.admissible_displacement(v, step);
+        }
+      const unsigned int held
+        = hierarchy.back_off(level, positions, moved, settings.min_quality);
+      positions.swap(moved);
+      return held;
+    }
+
+
+
+    namespace {
+      template <int dim>
+      void
+      weigh(const VertexHierarchy<dim>    &hierarchy,
+            const unsigned int             level,
+            const DistanceField<dim>      &distance,
+            const SmoothingSettings       &settings,
+            const std::vector<Point<dim>> &positions,
+            std::vector<double>           &weight)
+      {
+        for (const unsigned int v : hierarchy.vertices_on_level(level))
+          weight[v] = hat_weight(distance.signed_distance(positions[v]),
+                                 settings.width,
+                                 settings.peak_weight);
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    LaplaceKappa<dim>::LaplaceKappa(const SmoothingSettings &settings_)
+      : settings(settings_)
+    {}
+
+
+
+    template <int dim>
+    DeformationReport
+    LaplaceKappa<dim>::deform(Triangulation<dim>       &tria,
+                              const DistanceField<dim> &distance) const
+    {
+      DeformationReport          report;
+      const VertexHierarchy<dim> hierarchy(tria);
+      std::vector<Point<dim>>    positions = tria.get_vertices();
+      std::vector<double>        weight(positions.size(), 1.);
+      const std::vector<bool>    pinned(positions.size(), false);
+      for (unsigned int level = 0; level < hierarchy.n_levels(); ++level)
+        {
+          for (unsigned int s = 0; s < settings.sweeps(level); ++s)
+            {
+              weigh(hierarchy, level, distance, settings, positions, weight);
+              report.held_back_vertices += smoothing_sweep(hierarchy,
+                                                           level,
+                                                           weight,
+                                                           pinned,
+                                                           settings,
+                                                           positions);
+              ++report.steps;
+            }
+          if (level + 1 < hierarchy.n_levels())
+            hierarchy.prolongate(level, positions);
+        }
+      VertexHierarchy<dim>::write_positions(tria, positions);
+      report.quality = compute_mesh_quality(tria);
+      return report;
+    }
+
+
+
+    template <int dim>
+    LaplaceAlpha<dim>::LaplaceAlpha(const SmoothingSettings &settings_,
+                                    const double             projection_range_)
+      : settings(settings_)
+      , projection_range(projection_range_)
+    {}
+
+
+
+    template <int dim>
+    DeformationReport
+    LaplaceAlpha<dim>::deform(Triangulation<dim>       &tria,
+                              const DistanceField<dim> &distance) const
+    {
+      DeformationReport          report;
+      const VertexHierarchy<dim> hierarchy(tria);
+      std::vector<Point<dim>>    positions = tria.get_vertices();
+      std::vector<double>        weight(positions.size(), 1.);
+      std::vector<bool>          pinned(positions.size(), false);
+
+      // Put vertex v onto the surface if that keeps it on its boundary.
+      auto project = [&](const unsigned int v, std::vector<Point<dim>> &x) {
+        Tensor<1, dim> normal;
+        const double   d       = distance.signed_distance(x[v], &normal);
+        const auto     step    = -d * normal;
+        const auto     allowed = hierarchy.admissible_displacement(v, step);
+        if ((allowed - step).norm() > 1e-12 * (1. + std::abs(d)))
+          return false;
+        x[v] += step;
+        return true;
+      };
+
+      for (unsigned int level = 0; level < hierarchy.n_levels(); ++level)
+        {
+          std::vector<unsigned int> candidates;
+          if (level == 0)
+            {
+              for (const unsigned int v : hierarchy.vertices_on_level(0))
+                {
+                  double shortest = std::numeric_limits<double>::max();
+                  for (const unsigned int j : hierarchy.neighbours(0, v))
+                    shortest
+                      = std::min(shortest, positions[v].distance(positions[j]));
+                  if (std::abs(distance.signed_distance(positions[v]))
+                      < projection_range * shortest)
+                    candidates.push_back(v);
+                }
+            }
+          else
+            {
+              // The edge midpoints this refinement created between two
+              // vertices on the surface: the only new vertices with exactly
+              // two neighbours from the coarser level, both pinned.
+              std::vector<bool> old(positions.size(), false);
+              for (const unsigned int v :
+                   hierarchy.vertices_on_level(level - 1))
+                old[v] = true;
+              for (const unsigned int v : hierarchy.vertices_on_level(level))
+                {
+                  if (old[v])
+                    continue;
+                  unsigned int n_old = 0, n_pinned = 0;
+                  for (const unsigned int j : hierarchy.neighbours(level, v))
+                    if (old[j])
+                      {
+                        ++n_old;
+                        n_pinned += pinned[j];
+                      }
+                  if (n_old == 2 && n_pinned == 2)
+                    candidates.push_back(v);
+                }
+            }
+          // Project, keep every cell valid, and pin the vertices that got
+          // there; smoothing then makes room, and the candidates that were
+          // held back get a second try.
+          auto project_candidates = [&]() {
+            std::vector<Point<dim>>   projected = positions;
+            std::vector<unsigned int> placed;
+            for (const unsigned int v : candidates)
+              if (!pinned[v] && !hierarchy.is_fixed(v) && project(v, projected))
+                placed.push_back(v);
+            const unsigned int held = hierarchy.back_off(level,
+                                                         positions,
+                                                         projected,
+                                                         settings.min_quality);
+            positions.swap(projected);
+            for (const unsigned int v : placed)
+              if (std::abs(distance.signed_distance(positions[v]))
+                  < 1e-9 * (1. + settings.width))
+                {
+                  pinned[v] = true;
+                  ++report.projected_vertices;
+                }
+            return held;
+          };
+          project_candidates();
+          for (unsigned int s = 0; s < settings.sweeps(level); ++s)
+            {
+              weigh(hierarchy, level, distance, settings, positions, weight);
+              report.held_back_vertices += smoothing_sweep(hierarchy,
+                                                           level,
+                                                           weight,
+                                                           pinned,
+                                                           settings,
+                                                           positions);
+              ++report.steps;
+            }
+          report.held_back_vertices += project_candidates();
+          if (level + 1 < hierarchy.n_levels())
+            hierarchy.prolongate(level, positions);
+        }
+      VertexHierarchy<dim>::write_positions(tria, positions);
+      report.quality = compute_mesh_quality(tria);
+      return report;
+    }
+
+    template unsigned int
+    smoothing_sweep<2>(const VertexHierarchy<2> &,
+                       const unsigned int,
+                       const std::vector<double> &,
+                       const std::vector<bool> &,
+                       const SmoothingSettings &,
+                       std::vector<Point<2>> &);
+    template unsigned int
+    smoothing_sweep<3>(const VertexHierarchy<3> &,
+                       const unsigned int,
+                       const std::vector<double> &,
+                       const std::vector<bool> &,
+                       const SmoothingSettings &,
+                       std::vector<Point<3>> &);
+    template class LaplaceKappa<2>;
+    template class LaplaceKappa<3>;
+    template class LaplaceAlpha<2>;
+    template class LaplaceAlpha<3>;
+  } // namespace deformation
+} // namespace particulate
