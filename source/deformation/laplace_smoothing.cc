@@ -42,19 +42,33 @@ namespace particulate {
 
 
     namespace {
+      /** The sweeps of one level (Algorithm 12's inner loop), the hat
+       *  weights recomputed from the moved vertices before each. */
       template <int dim>
       void
-      weigh(const VertexHierarchy<dim>    &hierarchy,
-            const unsigned int             level,
-            const DistanceField<dim>      &distance,
-            const SmoothingSettings       &settings,
-            const std::vector<Point<dim>> &positions,
-            std::vector<double>           &weight)
+      smooth_level(const VertexHierarchy<dim> &hierarchy,
+                   const unsigned int          level,
+                   const DistanceField<dim>   &distance,
+                   const SmoothingSettings    &settings,
+                   const std::vector<bool>    &pinned,
+                   std::vector<Point<dim>>    &positions,
+                   DeformationReport          &report)
       {
-        for (const unsigned int v : hierarchy.vertices_on_level(level))
-          weight[v] = hat_weight(distance.signed_distance(positions[v]),
-                                 settings.width,
-                                 settings.peak_weight);
+        std::vector<double> weight(positions.size(), 1.);
+        for (unsigned int s = 0; s < settings.sweeps(level); ++s)
+          {
+            for (const unsigned int v : hierarchy.vertices_on_level(level))
+              weight[v] = hat_weight(distance.signed_distance(positions[v]),
+                                     settings.width,
+                                     settings.peak_weight);
+            report.held_back_vertices += smoothing_sweep(hierarchy,
+                                                         level,
+                                                         weight,
+                                                         pinned,
+                                                         settings,
+                                                         positions);
+            ++report.steps;
+          }
       }
     } // namespace
 
@@ -75,21 +89,16 @@ namespace particulate {
       DeformationReport          report;
       const VertexHierarchy<dim> hierarchy(tria);
       std::vector<Point<dim>>    positions = tria.get_vertices();
-      std::vector<double>        weight(positions.size(), 1.);
       const std::vector<bool>    pinned(positions.size(), false);
       for (unsigned int level = 0; level < hierarchy.n_levels(); ++level)
         {
-          for (unsigned int s = 0; s < settings.sweeps(level); ++s)
-            {
-              weigh(hierarchy, level, distance, settings, positions, weight);
-              report.held_back_vertices += smoothing_sweep(hierarchy,
-                                                           level,
-                                                           weight,
-                                                           pinned,
-                                                           settings,
-                                                           positions);
-              ++report.steps;
-            }
+          smooth_level(hierarchy,
+                       level,
+                       distance,
+                       settings,
+                       pinned,
+                       positions,
+                       report);
           if (level + 1 < hierarchy.n_levels())
             hierarchy.prolongate(level, positions);
         }
@@ -117,7 +126,6 @@ namespace particulate {
       DeformationReport          report;
       const VertexHierarchy<dim> hierarchy(tria);
       std::vector<Point<dim>>    positions = tria.get_vertices();
-      std::vector<double>        weight(positions.size(), 1.);
       std::vector<bool>          pinned(positions.size(), false);
 
       // Put vertex v onto the surface if that keeps it on its boundary.
@@ -196,17 +204,13 @@ namespace particulate {
             return held;
           };
           project_candidates();
-          for (unsigned int s = 0; s < settings.sweeps(level); ++s)
-            {
-              weigh(hierarchy, level, distance, settings, positions, weight);
-              report.held_back_vertices += smoothing_sweep(hierarchy,
-                                                           level,
-                                                           weight,
-                                                           pinned,
-                                                           settings,
-                                                           positions);
-              ++report.steps;
-            }
+          smooth_level(hierarchy,
+                       level,
+                       distance,
+                       settings,
+                       pinned,
+                       positions,
+                       report);
           report.held_back_vertices += project_candidates();
           if (level + 1 < hierarchy.n_levels())
             hierarchy.prolongate(level, positions);
