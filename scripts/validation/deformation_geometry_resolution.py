@@ -19,20 +19,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
-
-def polylines(path):
-    lines, current = [], []
-    with open(path) as f:
-        for line in f:
-            c = line.split()
-            if len(c) >= 2:
-                current.append((float(c[0]), float(c[1])))
-            elif current:
-                lines.append(current)
-                current = []
-    if current:
-        lines.append(current)
-    return lines
+from deformation_test_problem import read_gnuplot as polylines  # noqa: E402
 
 
 def main():

@@ -36,7 +36,8 @@ def read_rows(path):
 
 
 def read_gnuplot(path):
-    """Polylines of a deal.II gnuplot grid file."""
+    """Polylines of a gnuplot-style file (deal.II grids, slices): points
+    "x y ...", a blank line between lines."""
     lines, current = [], []
     with open(path) as f:
         for line in f:

@@ -23,19 +23,12 @@
 #include <cmath>
 #include <iostream>
 
+#include "../geometry/check.h"
+
 using namespace dealii;
 using namespace particulate::deformation;
 
 namespace {
-  int failures = 0;
-
-  void
-  check(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "  ok    " : "  FAIL  ") << what << '\n';
-    failures += !ok;
-  }
-
   template <int dim>
   std::function<double(const Point<dim> &)>
   circle_monitor(const double eps)
@@ -62,7 +55,7 @@ namespace {
     PdeDeformation<2>(s).deform_to_monitor(tria, circle_monitor<2>(eps));
     const auto q = compute_mesh_quality(tria);
     if (q.n_inverted_cells > 0)
-      check(false, "no inverted cell after the PDE method");
+      CHECK_MSG(false, "no inverted cell after the PDE method");
     return equidistribution_error(tria, circle_monitor<2>(eps)).l2;
   }
 
@@ -88,7 +81,7 @@ main(int argc, char **argv)
     double moved = 0.;
     for (unsigned int v = 0; v < before.size(); ++v)
       moved = std::max(moved, before[v].distance(tria.get_vertices()[v]));
-    check(moved < 1e-12, "a constant monitor moves no vertex");
+    CHECK_MSG(moved < 1e-12, "a constant monitor moves no vertex");
   }
   for (const bool robust : {false, true})
     {
@@ -98,16 +91,16 @@ main(int argc, char **argv)
       std::cout << "  " << (robust ? "robust" : "basic ")
                 << " eps 0.1, levels 4-6: E_L2 " << e4 << ' ' << e5 << ' ' << e6
                 << '\n';
-      check(e5 < e4 / 2. && e6 < e5 / 2.,
-            std::string(robust ? "robust" : "basic")
-              + ": equidistribution error at least first order in h");
+      CHECK_MSG(e5 < e4 / 2. && e6 < e5 / 2.,
+                std::string(robust ? "robust" : "basic")
+                  + ": equidistribution error at least first order in h");
     }
   {
     const double e5 = test_problem(5, 0.02, true),
                  e6 = test_problem(6, 0.02, true);
     std::cout << "  robust eps 0.02, levels 5-6: E_L2 " << e5 << ' ' << e6
               << '\n';
-    check(e6 < e5 / 2., "robust method reaches eps = 0.02 and converges");
+    CHECK_MSG(e6 < e5 / 2., "robust method reaches eps = 0.02 and converges");
 
     Triangulation<2> tria;
     GridGenerator::hyper_cube(tria);
@@ -126,8 +119,8 @@ main(int argc, char **argv)
         refused = true;
         std::cout << "  (basic, eps 0.02, level 5: " << e.what() << ")\n";
       }
-    check(refused && before == tria.get_vertices(),
-          "a tangling basic step is refused and leaves the mesh untouched");
+    CHECK_MSG(refused && before == tria.get_vertices(),
+              "a tangling basic step is refused and leaves the mesh untouched");
   }
   {
     // 3D: a sphere of radius 0.25 through the geometry module.
@@ -147,8 +140,9 @@ main(int argc, char **argv)
     std::cout << "  3D sphere, level 3, robust: E_L2 " << before.l2 << " -> "
               << after.l2 << ", min SJ " << report.quality.min_scaled_jacobian
               << ", " << report.steps << " steps\n";
-    check(report.quality.n_inverted_cells == 0 && after.l2 < before.l2 / 2.,
-          "3D: the robust method halves the error without inverting a cell");
+    CHECK_MSG(
+      report.quality.n_inverted_cells == 0 && after.l2 < before.l2 / 2.,
+      "3D: the robust method halves the error without inverting a cell");
   }
 
   std::cout << "Laplace-kappa and Laplace-alpha around a circle\n";
@@ -190,9 +184,9 @@ main(int argc, char **argv)
                 << report.quality.min_scaled_jacobian << ", held back "
                 << report.held_back_vertices << ", on the surface "
                 << report.projected_vertices << '\n';
-      check(report.quality.min_scaled_jacobian
-              >= (alpha ? 0.1 : smoothing.min_quality),
-            name + ": no cell below the quality bound");
+      CHECK_MSG(report.quality.min_scaled_jacobian
+                  >= (alpha ? 0.1 : smoothing.min_quality),
+                name + ": no cell below the quality bound");
       bool on_sides = true;
       for (const auto &cell : tria.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
@@ -204,9 +198,9 @@ main(int argc, char **argv)
                   = std::min({x[0], x[1], 1. - x[0], 1. - x[1]});
                 on_sides = on_sides && std::abs(side) < 1e-14;
               }
-      check(on_sides, name + ": boundary vertices stay on the sides");
-      check(near_after > 2 * near_before,
-            name + ": more than twice as many vertices near the surface");
+      CHECK_MSG(on_sides, name + ": boundary vertices stay on the sides");
+      CHECK_MSG(near_after > 2 * near_before,
+                name + ": more than twice as many vertices near the surface");
       if (alpha)
         {
           // The vertices on the circle trace it: sorted by angle, no two
@@ -222,8 +216,8 @@ main(int argc, char **argv)
           std::cout << "  Laplace-alpha: " << angles.size()
                     << " vertices on the circle, largest gap " << gap * 0.25 / h
                     << " h\n";
-          check(gap * 0.25 <= 2. * h,
-                "Laplace-alpha: vertices on the circle at most 2h apart");
+          CHECK_MSG(gap * 0.25 <= 2. * h,
+                    "Laplace-alpha: vertices on the circle at most 2h apart");
         }
     }
 
@@ -238,15 +232,15 @@ main(int argc, char **argv)
                                 "end\n");
     DeformationParameters p;
     p.parse(prm);
-    const auto method = create_mesh_deformation<2>(p);
-    check(p.sweeps_per_level == std::vector<unsigned int>{2, 3}
-            && p.width == 0.05 && method
-            && method->name() == "robust deformation method",
-          "'Method = pde-robust' builds the robust PDE method");
+    const auto                      method = create_mesh_deformation<2>(p);
+    const std::vector<unsigned int> sweeps{2, 3};
+    CHECK_MSG(p.sweeps_per_level == sweeps && p.width == 0.05 && method
+                && method->name() == "robust deformation method",
+              "'Method = pde-robust' builds the robust PDE method");
     p.method = DeformationParameters::Method::none;
-    check(create_mesh_deformation<3>(p) == nullptr, "'none' builds nothing");
+    CHECK_MSG(create_mesh_deformation<3>(p) == nullptr,
+              "'none' builds nothing");
   }
 
-  std::cout << (failures == 0 ? "all passed\n" : "FAILED\n");
-  return failures == 0 ? 0 : 1;
+  return test::finish("deformation_methods");
 }

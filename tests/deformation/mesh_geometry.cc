@@ -18,19 +18,12 @@
 #include <iostream>
 #include <random>
 
+#include "../geometry/check.h"
+
 using namespace dealii;
 using namespace particulate::deformation;
 
 namespace {
-  int failures = 0;
-
-  void
-  check(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "  ok    " : "  FAIL  ") << what << '\n';
-    failures += !ok;
-  }
-
   bool
   close(const double a, const double b, const double tol = 1e-12)
   {
@@ -48,28 +41,29 @@ main(int argc, char **argv)
   {
     const std::array<Point<2>, 4> rectangle
       = {{Point<2>(0, 0), Point<2>(3, 0), Point<2>(0, 1), Point<2>(3, 1)}};
-    check(close(scaled_jacobian<2>(rectangle), 1.), "rectangle: SJ = 1");
-    check(close(aspect_ratio<2>(rectangle), 3.), "rectangle 3x1: AR = 3");
+    CHECK_MSG(close(scaled_jacobian<2>(rectangle), 1.), "rectangle: SJ = 1");
+    CHECK_MSG(close(aspect_ratio<2>(rectangle), 3.), "rectangle 3x1: AR = 3");
     const double                  theta = 0.4;
     const Point<2>                e(std::cos(theta), std::sin(theta));
     const std::array<Point<2>, 4> rhombus
       = {{Point<2>(0, 0), Point<2>(1, 0), e, Point<2>(1, 0) + e}};
-    check(close(scaled_jacobian<2>(rhombus), std::sin(theta)),
-          "parallelogram: SJ = sin(theta)");
+    CHECK_MSG(close(scaled_jacobian<2>(rhombus), std::sin(theta)),
+              "parallelogram: SJ = sin(theta)");
     const std::array<Point<2>, 4> inverted
       = {{Point<2>(1, 0), Point<2>(0, 0), Point<2>(0, 1), Point<2>(1, 1)}};
-    check(scaled_jacobian<2>(inverted) < 0., "inverted quadrilateral: SJ < 0");
+    CHECK_MSG(scaled_jacobian<2>(inverted) < 0.,
+              "inverted quadrilateral: SJ < 0");
     std::array<Point<3>, 8> brick, sheared;
     for (unsigned int v = 0; v < 8; ++v)
       {
         brick[v] = Point<3>(2. * (v & 1), 1. * ((v >> 1) & 1), 0.5 * (v >> 2));
         sheared[v] = brick[v] + Point<3>(0.5 * brick[v][2] / 0.5, 0, 0);
       }
-    check(close(scaled_jacobian<3>(brick), 1.), "brick: SJ = 1");
+    CHECK_MSG(close(scaled_jacobian<3>(brick), 1.), "brick: SJ = 1");
     // shearing x by z: the z edge (0, 0, 0.5) becomes (0.5, 0, 0.5), at
     // 45 degrees to the x edge: SJ = sin(45°)
-    check(close(scaled_jacobian<3>(sheared), 1. / std::sqrt(2.)),
-          "sheared hexahedron: SJ = 1/sqrt(2)");
+    CHECK_MSG(close(scaled_jacobian<3>(sheared), 1. / std::sqrt(2.)),
+              "sheared hexahedron: SJ = 1/sqrt(2)");
   }
 
   // Equidistribution: zero for a uniform mesh under a constant monitor and
@@ -80,7 +74,8 @@ main(int argc, char **argv)
     uniform.refine_global(3);
     const auto e0
       = equidistribution_error<2>(uniform, [](const Point<2> &) { return 2.; });
-    check(e0.l2 < 1e-14 && e0.max < 1e-14, "uniform mesh, constant monitor");
+    CHECK_MSG(e0.l2 < 1e-14 && e0.max < 1e-14,
+              "uniform mesh, constant monitor");
     Triangulation<2>                       graded;
     const std::vector<std::vector<double>> steps = {{0.1, 0.2, 0.3, 0.4}, {1.}};
     GridGenerator::subdivided_hyper_rectangle(graded,
@@ -95,11 +90,12 @@ main(int argc, char **argv)
                     x[0] < 0.6 ? 1. :
                                  1.5);
     });
-    check(e1.max < 1e-12, "graded mesh, monitor = its cell sizes");
+    CHECK_MSG(e1.max < 1e-12, "graded mesh, monitor = its cell sizes");
     const auto e2
       = equidistribution_error<2>(graded, [](const Point<2> &) { return 1.; });
     // cells 0.1 ... 0.4 against the mean 0.25: |e| at most 0.6
-    check(close(e2.max, 0.6), "graded mesh, constant monitor: max |e| = 0.6");
+    CHECK_MSG(close(e2.max, 0.6),
+              "graded mesh, constant monitor: max |e| = 0.6");
   }
 
   // Coordinate prolongation reproduces any affine image of the hierarchy,
@@ -123,7 +119,7 @@ main(int argc, char **argv)
     double error = 0.;
     for (unsigned int v = 0; v < positions.size(); ++v)
       error = std::max(error, positions[v].distance(exact[v]));
-    check(error < 1e-14, "prolongation is exact for affine maps");
+    CHECK_MSG(error < 1e-14, "prolongation is exact for affine maps");
 
     const Tensor<1, 3> push({0.3, -0.2, 0.7});
     bool               stays = true;
@@ -135,7 +131,7 @@ main(int argc, char **argv)
           if ((x[d] == 0. || x[d] == 1.) && y[d] != x[d])
             stays = false;
       }
-    check(stays, "boundary vertices slide only within their faces");
+    CHECK_MSG(stays, "boundary vertices slide only within their faces");
     bool roles = true;
     for (unsigned int v = 0; v < tria.n_vertices(); ++v)
       {
@@ -148,7 +144,7 @@ main(int argc, char **argv)
         roles = roles && hierarchy.is_fixed(v) == (on_planes == 3)
                 && hierarchy.at_boundary(v) == (on_planes > 0);
       }
-    check(roles, "corners fixed, other boundary vertices sliding");
+    CHECK_MSG(roles, "corners fixed, other boundary vertices sliding");
   }
 
   // Back-off: pushing a vertex across its neighbours is cut back so that no
@@ -169,8 +165,8 @@ main(int argc, char **argv)
     double             worst = 1.;
     for (unsigned int c = 0; c < hierarchy.cells_on_level(2).size(); ++c)
       worst = std::min(worst, hierarchy.cell_quality(2, c, moved));
-    check(held == 1 && worst >= 0.2 && moved[centre][0] > 0.5,
-          "an inverting move is cut back to a valid one");
+    CHECK_MSG(held == 1 && worst >= 0.2 && moved[centre][0] > 0.5,
+              "an inverting move is cut back to a valid one");
   }
 
   // Ray-tracing point location finds the same cell as a brute-force search
@@ -199,10 +195,9 @@ main(int argc, char **argv)
                  && (found.cell == brute.first || found.cell->point_inside(p));
         hint = found.cell;
       }
-    check(agree == n, "ray tracing agrees with brute force on 500 points");
-    check(locator.n_fallbacks() == 0, "no brute-force fallback was needed");
+    CHECK_MSG(agree == n, "ray tracing agrees with brute force on 500 points");
+    CHECK_MSG(locator.n_fallbacks() == 0, "no brute-force fallback was needed");
   }
 
-  std::cout << (failures == 0 ? "all passed\n" : "FAILED\n");
-  return failures == 0 ? 0 : 1;
+  return test::finish("deformation_mesh_geometry");
 }
