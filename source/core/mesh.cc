@@ -294,10 +294,8 @@ namespace particulate {
 
     template <int dim>
     void
-    create_mesh(const MeshParameters                           &p,
-                parallel::fullydistributed::Triangulation<dim> &tria)
+    create_serial_mesh(const MeshParameters &p, Triangulation<dim> &serial)
     {
-      Triangulation<dim> serial;
       switch (p.type)
         {
           case MeshParameters::Type::hyper_rectangle:
@@ -353,6 +351,17 @@ namespace particulate {
             break;
         }
       serial.refine_global(p.refinements);
+    }
+
+
+
+    template <int dim>
+    void
+    create_mesh(const MeshParameters                           &p,
+                parallel::fullydistributed::Triangulation<dim> &tria)
+    {
+      Triangulation<dim> serial;
+      create_serial_mesh(p, serial);
 
       const MPI_Comm comm = tria.get_communicator();
       GridTools::partition_triangulation_zorder(Utilities::MPI::n_mpi_processes(
@@ -394,6 +403,10 @@ namespace particulate {
       return Utilities::MPI::compute_set_union(mine, tria.get_communicator());
     }
 
+    template void
+    create_serial_mesh<2>(const MeshParameters &, Triangulation<2> &);
+    template void
+    create_serial_mesh<3>(const MeshParameters &, Triangulation<3> &);
     template void
     create_mesh<2>(const MeshParameters &,
                    parallel::fullydistributed::Triangulation<2> &);

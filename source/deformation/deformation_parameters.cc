@@ -60,9 +60,9 @@ namespace particulate {
       prm.declare_entry("Projection range",
                         "0.45",
                         Patterns::Double(0., 0.5),
-                        "laplace-alpha: coarse vertices closer to a surface "
-                        "than this fraction of their shortest edge are put "
-                        "onto it.");
+                        "laplace-alpha: vertices (on every level) closer to a "
+                        "surface than this fraction of their shortest edge "
+                        "are put onto it.");
       prm.declare_entry("Minimum cell quality",
                         "0.2",
                         Patterns::Double(0., 1.),

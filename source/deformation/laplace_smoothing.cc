@@ -142,21 +142,41 @@ namespace particulate {
 
       for (unsigned int level = 0; level < hierarchy.n_levels(); ++level)
         {
+          // Vertices of this level close to a surface (within
+          // projection_range of their shortest edge) go onto it: on the
+          // coarsest level these start the trace of the surface, on finer
+          // levels they start it where the body is smaller than the coarse
+          // cells and no coarse vertex came near.
           std::vector<unsigned int> candidates;
-          if (level == 0)
+          for (const unsigned int v : hierarchy.vertices_on_level(level))
             {
-              for (const unsigned int v : hierarchy.vertices_on_level(0))
+              if (pinned[v])
+                continue;
+              double shortest = std::numeric_limits<double>::max();
+              for (const unsigned int j : hierarchy.neighbours(level, v))
+                shortest
+                  = std::min(shortest, positions[v].distance(positions[j]));
+              Tensor<1, dim> normal;
+              const double d = distance.signed_distance(positions[v], &normal);
+              if (std::abs(d) >= projection_range * shortest)
+                continue;
+              // Where the surface is traced already (a pinned vertex near
+              // the foot point, within two edges), a second vertex there
+              // would only crush the cells between the two.
+              const Point<dim> foot  = positions[v] - d * normal;
+              bool             taken = false;
+              for (const unsigned int j : hierarchy.neighbours(level, v))
                 {
-                  double shortest = std::numeric_limits<double>::max();
-                  for (const unsigned int j : hierarchy.neighbours(0, v))
-                    shortest
-                      = std::min(shortest, positions[v].distance(positions[j]));
-                  if (std::abs(distance.signed_distance(positions[v]))
-                      < projection_range * shortest)
-                    candidates.push_back(v);
+                  taken |= pinned[j]
+                           && positions[j].distance(foot) < 0.5 * shortest;
+                  for (const unsigned int k : hierarchy.neighbours(level, j))
+                    taken |= pinned[k]
+                             && positions[k].distance(foot) < 0.5 * shortest;
                 }
+              if (!taken)
+                candidates.push_back(v);
             }
-          else
+          if (level > 0)
             {
               // The edge midpoints this refinement created between two
               // vertices on the surface: the only new vertices with exactly
@@ -169,14 +189,25 @@ namespace particulate {
                 {
                   if (old[v])
                     continue;
-                  unsigned int n_old = 0, n_pinned = 0;
+                  unsigned int              n_pinned = 0;
+                  std::vector<unsigned int> ends;
                   for (const unsigned int j : hierarchy.neighbours(level, v))
                     if (old[j])
                       {
-                        ++n_old;
+                        ends.push_back(j);
                         n_pinned += pinned[j];
                       }
-                  if (n_old == 2 && n_pinned == 2)
+                  // Only an edge that runs along the surface: a chord
+                  // across the body (both ends on the surface, the midpoint
+                  // deep inside) would fold its cells when the midpoint is
+                  // pulled out. Along the surface the midpoint is at most
+                  // the sagitta, a quarter of the edge for arcs up to
+                  // about 106 degrees.
+                  if (ends.size() == 2 && n_pinned == 2
+                      && std::abs(distance.signed_distance(positions[v]))
+                           <= 0.25
+                                * positions[ends[0]].distance(
+                                  positions[ends[1]]))
                     candidates.push_back(v);
                 }
             }

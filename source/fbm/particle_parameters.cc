@@ -94,11 +94,23 @@ namespace particulate {
                         "the fluid 'Density' of subsection 'Fluid'.");
       prm.declare_entry("Motion",
                         "free",
-                        Patterns::Selection("free|fixed"),
+                        Patterns::Selection("free|fixed|prescribed"),
                         "'free': the particles move under the fluid force, "
                         "buoyancy-corrected gravity and contacts (thesis eq. "
                         "5.3). 'fixed': they stay at rest, obstacles described "
-                        "by the fictitious boundary method.");
+                        "by the fictitious boundary method. 'prescribed': "
+                        "they translate by 'Prescribed displacement' (e.g. an "
+                        "oscillating cylinder, thesis §6.3), whatever the "
+                        "fluid does.");
+      core::FunctionExpression::declare(
+        prm,
+        "Prescribed displacement",
+        "0; 0; 0",
+        "'Motion = prescribed': the displacement d(t) [m] of every particle "
+        "from its initial position, one expression in t per space dimension "
+        "(x, y and z are not used), e.g. 'A*sin(2*pi*f*t); 0' with 'A=0.25, "
+        "f=0.25' in the constants entry. The velocity is its time "
+        "derivative, taken numerically.");
       prm.declare_entry("Positions",
                         "",
                         Patterns::Anything(),
@@ -200,12 +212,16 @@ namespace particulate {
     ParticleParameters::parse(ParameterHandler &prm, const unsigned int dim)
     {
       prm.enter_subsection("Particles");
-      shape      = prm.get("Shape") == "disk" ? Shape::disk : Shape::sphere;
-      radius     = prm.get_double("Radius");
-      density    = prm.get_double("Density");
-      motion     = prm.get("Motion") == "fixed" ? Motion::fixed : Motion::free;
-      positions  = parse_points(prm.get("Positions"), dim, "Positions");
-      velocities = parse_points(prm.get("Velocities"), dim, "Velocities");
+      shape   = prm.get("Shape") == "disk" ? Shape::disk : Shape::sphere;
+      radius  = prm.get_double("Radius");
+      density = prm.get_double("Density");
+      const std::string m = prm.get("Motion");
+      motion              = m == "fixed"      ? Motion::fixed :
+                            m == "prescribed" ? Motion::prescribed :
+                                                Motion::free;
+      prescribed_displacement.parse(prm, "Prescribed displacement");
+      positions    = parse_points(prm.get("Positions"), dim, "Positions");
+      velocities   = parse_points(prm.get("Velocities"), dim, "Velocities");
       const auto g = Utilities::split_string_list(prm.get("Gravity"), ',');
       gravity.setZero();
       if (g.size() < dim)
@@ -297,6 +313,26 @@ namespace particulate {
         fail("Radius", "must be positive.");
       if (!(density > 0.))
         fail("Density", "must be positive.");
+      if (motion == Motion::prescribed)
+        {
+          // the component count of the expression is checked here, so a
+          // forgotten ';' is reported before the run starts
+          try
+            {
+              if (dim == 2)
+                prescribed_displacement.create<2>(2,
+                                                  "Particles / Prescribed "
+                                                  "displacement");
+              else
+                prescribed_displacement.create<3>(3,
+                                                  "Particles / Prescribed "
+                                                  "displacement");
+            }
+          catch (const std::exception &e)
+            {
+              fail("Prescribed displacement", e.what());
+            }
+        }
       if (!velocities.empty() && velocities.size() != positions.size())
         fail("Velocities",
              "gives " + std::to_string(velocities.size()) + " velocities for "

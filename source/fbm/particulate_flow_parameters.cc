@@ -14,6 +14,7 @@ namespace particulate {
     {
       fluid::FlowCaseParameters::declare(prm);
       ParticleParameters::declare(prm);
+      deformation::DeformationParameters::declare(prm);
       core::CheckpointParameters::declare(prm);
     }
 
@@ -38,6 +39,16 @@ namespace particulate {
           throw std::runtime_error(filename + ": " + e.what());
         }
       checkpoint.parse(prm);
+      deformation.parse(prm);
+      if (flow.simulation.type == core::SimulationParameters::Type::fluid
+          && deformation.method
+               != deformation::DeformationParameters::Method::none)
+        throw std::runtime_error(
+          filename
+          + ": subsection 'Mesh deformation' sets a 'Method', but 'Type' in "
+            "subsection 'Simulation' is 'fluid': the mesh adapts to "
+            "particles, and this case has none. Set 'Method = none' or 'Type "
+            "= particulate flow'.");
       // never ignore input silently
       if (flow.simulation.type == core::SimulationParameters::Type::fluid
           && checkpoint.enabled())

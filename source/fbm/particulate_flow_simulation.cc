@@ -2,6 +2,7 @@
 #include <particulate/core/mesh.h>
 #include <particulate/core/progress_reporter.h>
 #include <particulate/core/time_series_writer.h>
+#include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
@@ -109,12 +110,12 @@ namespace particulate {
       const auto        &particle_p = parameters.particles;
       const auto        &time_p     = flow_p.time;
       if (time_p.scheme == core::TimeParameters::Scheme::steady
-          && particle_p.motion == ParticleParameters::Motion::free)
+          && particle_p.motion != ParticleParameters::Motion::fixed)
         throw std::runtime_error(
           parameter_file
-          + ": free particles need a time-dependent scheme: set 'Scheme' in "
-            "subsection 'Time' to 'fractional-step theta' (or set 'Motion = "
-            "fixed' in subsection 'Particles').");
+          + ": moving particles need a time-dependent scheme: set 'Scheme' "
+            "in subsection 'Time' to 'fractional-step theta' (or set 'Motion "
+            "= fixed' in subsection 'Particles').");
       if (particle_p.n_particles() == 0)
         throw std::runtime_error(
           parameter_file
@@ -156,6 +157,58 @@ namespace particulate {
                   + "xyz"[a] + " = " + std::to_string(plane)
                   + "; put its centre there or remove the plane.");
           }
+
+      const bool prescribed
+        = particle_p.motion == ParticleParameters::Motion::prescribed;
+      const std::unique_ptr<Function<dim>> displacement
+        = prescribed ? particle_p.prescribed_displacement.template create<dim>(
+            dim,
+            "Particles / Prescribed displacement") :
+                       nullptr;
+      // where a prescribed particle is at time @p t, and how fast it moves
+      // (central difference of the displacement: the expression is smooth)
+      const auto prescribed_state
+        = [&](const Eigen::Vector3d &start, const double t) {
+            const double    h = 1e-6 * std::max(1., time_p.end_time);
+            Eigen::Vector3d x = start, v = Eigen::Vector3d::Zero();
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                displacement->set_time(t);
+                x[d] += displacement->value(Point<dim>(), d);
+                displacement->set_time(t + h);
+                v[d] = displacement->value(Point<dim>(), d);
+                displacement->set_time(t - h);
+                v[d] = (v[d] - displacement->value(Point<dim>(), d)) / (2. * h);
+              }
+            return std::make_pair(x, v);
+          };
+      std::vector<Eigen::Vector3d> initial_centres = particle_p.positions;
+      if (prescribed)
+        for (auto &c : initial_centres)
+          c = prescribed_state(c, 0.).first;
+
+      // r-adaptivity: the mesh resolves the particles where they start
+      std::unique_ptr<BodyAdaptedMesh<dim>> adapted_mesh;
+      deformation::DeformationReport        initial_report;
+      const bool                            deforming
+        = parameters.deformation.method
+          != deformation::DeformationParameters::Method::none;
+      if (deforming)
+        {
+          TimerOutput::Scope scope(timer, "mesh deformation");
+          adapted_mesh
+            = std::make_unique<BodyAdaptedMesh<dim>>(flow_p.mesh,
+                                                     parameters.deformation,
+                                                     particle_p,
+                                                     tria);
+          initial_report     = adapted_mesh->adapt(initial_centres);
+          const auto &report = initial_report;
+          pcout << "Mesh deformation: " << adapted_mesh->mesh().method_name()
+                << ", min scaled Jacobian "
+                << report.quality.min_scaled_jacobian
+                << ", largest aspect ratio " << report.quality.max_aspect_ratio
+                << std::endl;
+        }
 
       fluid::NavierStokes<dim> flow(flow_p.fluid, tria, timer);
       flow.setup_dofs();
@@ -201,7 +254,7 @@ namespace particulate {
         {
           ids.push_back(world.add_body(shape,
                                        particle_material,
-                                       particle_p.positions[i],
+                                       initial_centres[i],
                                        Eigen::Quaterniond::Identity(),
                                        !free));
           // locked inside the engine, so that contacts cannot spend their
@@ -209,6 +262,9 @@ namespace particulate {
           world.body(ids.back()).lock_rotation(particle_p.locked_rotation);
           if (free && !particle_p.velocities.empty())
             world.body(ids.back()).linear_velocity = particle_p.velocities[i];
+          if (prescribed)
+            world.body(ids.back()).linear_velocity
+              = prescribed_state(particle_p.positions[i], 0.).second;
         }
       for (unsigned int d = 0; d < dim; ++d)
         {
@@ -285,6 +341,8 @@ namespace particulate {
               }
             flow.save_state(out);
             world.save_state(out);
+            if (adapted_mesh)
+              adapted_mesh->save(out);
             core::write_binary_series(out, flow_output.written());
             core::write_binary_series(out, body_output.written());
           },
@@ -320,6 +378,13 @@ namespace particulate {
               }
             flow.load_state(in);
             world.load_state(in);
+            if (adapted_mesh)
+              {
+                // the mesh velocity this sets is replaced before the next
+                // step uses one; the geometric matrices are what counts
+                flow.move_mesh([&]() { adapted_mesh->load(in); }, dt);
+                interface.setup();
+              }
             flow_output.resume(core::read_binary_series(in));
             body_output.resume(core::read_binary_series(in));
           });
@@ -348,6 +413,31 @@ namespace particulate {
             "nodes_inside"},
           communicator,
           parameters.restart));
+      // mesh deformation: how good the adapted mesh is, every step
+      std::unique_ptr<core::TimeSeriesWriter> mesh_series;
+      if (adapted_mesh)
+        mesh_series = std::make_unique<core::TimeSeriesWriter>(
+          series_file("mesh"),
+          std::vector<std::string>{"time",
+                                   "min_scaled_jacobian",
+                                   "mean_scaled_jacobian",
+                                   "max_aspect_ratio",
+                                   "held_back_vertices",
+                                   "projected_vertices",
+                                   "adaptation_steps"},
+          communicator,
+          parameters.restart);
+      const auto record_mesh
+        = [&](const double t, const deformation::DeformationReport &r) {
+            if (mesh_series)
+              mesh_series->write_row({t,
+                                      r.quality.min_scaled_jacobian,
+                                      r.quality.mean_scaled_jacobian,
+                                      r.quality.max_aspect_ratio,
+                                      double(r.held_back_vertices),
+                                      double(r.projected_vertices),
+                                      double(r.steps)});
+          };
       core::TimeSeriesWriter flow_series(series_file("flow"),
                                          {"time",
                                           "fluid_kinetic_energy",
@@ -454,9 +544,41 @@ namespace particulate {
         return std::string(buffer);
       };
 
+      // Moving particles on an adapted mesh, and prescribed motion: the
+      // mesh and the interface are updated at the start of each step.
+      const bool mesh_follows = adapted_mesh && !particle_p.motion_is_fixed();
+      // Step 0 of a moving mesh: bodies at t_n (free) or t_n+1
+      // (prescribed) -> mesh and its velocity -> interface.
+      const auto move_with_bodies = [&](const double t_new, const double k) {
+        if (prescribed)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              rigid::RigidBody &b = world.body(ids[i]);
+              std::tie(b.position, b.linear_velocity)
+                = prescribed_state(particle_p.positions[i], t_new);
+            }
+        if (mesh_follows)
+          {
+            deformation::DeformationReport report;
+            {
+              TimerOutput::Scope           scope(timer, "mesh deformation");
+              std::vector<Eigen::Vector3d> centres;
+              for (const auto id : ids)
+                centres.push_back(world.body(id).position);
+              report = adapted_mesh->follow(centres, flow, k);
+            }
+            record_mesh(t_new, report);
+            TimerOutput::Scope scope(timer, "fbm: containment and constraints");
+            interface.setup();
+          }
+        if (prescribed || mesh_follows)
+          impose_particle_velocities();
+      };
+
       impose_particle_velocities();
       if (!parameters.restart)
         {
+          record_mesh(0., initial_report);
           record(0., dt, fluid::SolveStatistics());
           write_fields(0, 0.);
         }
@@ -497,6 +619,7 @@ namespace particulate {
           while (t < time_p.end_time - eps)
             {
               dt = std::min(dt, time_p.end_time - t);
+              move_with_bodies(t + dt, dt);
               // 1.-2. fluid with the particles' velocities at t_n
               const fluid::SolveStatistics stats
                 = flow.advance(t, dt, time_p.scheme);
@@ -587,7 +710,8 @@ namespace particulate {
               t += dt;
               ++step;
               // 1. (next step) the interface at t_n+1
-              impose_particle_velocities();
+              if (!(prescribed || mesh_follows))
+                impose_particle_velocities();
               record(t, dt, stats);
               const bool last = t >= time_p.end_time - eps;
               if ((flow_p.output.interval > 0

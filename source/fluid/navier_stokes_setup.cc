@@ -294,7 +294,17 @@ namespace particulate {
         sp.compress();
         pressure_mass.reinit(sp);
       }
+      assemble_geometric_matrices();
+    }
 
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::assemble_geometric_matrices()
+    {
+      pressure_mass                  = 0.;
+      schur_approximation_is_current = false;
       // pressure mass matrix and lumped velocity mass: mesh quantities
       TrilinosWrappers::MPI::BlockVector lumped(owned_partitioning,
                                                 communicator);
@@ -307,8 +317,11 @@ namespace particulate {
       FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
       Vector<double>     cell_lumped(dofs_per_cell);
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-      const FEValuesExtractors::Vector     velocities(0);
       const FEValuesExtractors::Scalar     pressure(dim);
+      std::vector<unsigned int>            pressure_dofs;
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        if (fe.system_to_component_index(i).first == dim)
+          pressure_dofs.push_back(i);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -334,9 +347,14 @@ namespace particulate {
                       += fe_values.shape_value(i, q) * fe_values.JxW(q);
                 }
             cell->get_dof_indices(dof_indices);
-            zero_constraints.distribute_local_to_global(cell_mass,
-                                                        dof_indices,
-                                                        pressure_mass);
+            // pressure rows only, and the discontinuous pressure has no
+            // constraints: added directly (the velocity constraints, which
+            // change with the bodies, have no place in this matrix)
+            for (const unsigned int i : pressure_dofs)
+              for (const unsigned int j : pressure_dofs)
+                pressure_mass.add(dof_indices[i],
+                                  dof_indices[j],
+                                  cell_mass(i, j));
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               if (fe.system_to_component_index(i).first < dim)
                 lumped(dof_indices[i]) += cell_lumped(i);
@@ -409,6 +427,50 @@ namespace particulate {
     {
       mesh_velocity     = w;
       has_mesh_velocity = true;
+    }
+
+
+
+    namespace {
+      /** x itself: interpolated, the coordinates of the velocity nodes. */
+      template <int dim>
+      class Position : public Function<dim>
+      {
+      public:
+        Position()
+          : Function<dim>(dim)
+        {}
+        double
+        value(const Point<dim> &p, const unsigned int c) const override
+        {
+          return p[c];
+        }
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::move_mesh(const std::function<void()> &move_vertices,
+                                 const double                 time_step)
+    {
+      Assert(time_step > 0., ExcMessage("a mesh moves over a time step"));
+      TimerOutput::Scope  scope(timer, "fluid: mesh motion");
+      const Position<dim> position;
+      BlockVector         before(owned_partitioning, communicator),
+        after(owned_partitioning, communicator);
+      interpolate_velocity(position, before);
+      move_vertices();
+      interpolate_velocity(position, after);
+      // w = (x_new - x_old) / k at every velocity node, exactly the path
+      // the node travelled: the nodal values move with it (ALE)
+      after.block(0) -= before.block(0);
+      after.block(0) /= time_step;
+      after.block(1)    = 0.;
+      mesh_velocity     = after;
+      has_mesh_velocity = true;
+      assemble_geometric_matrices();
     }
 
 

@@ -45,6 +45,17 @@ namespace particulate {
     };
 
     /**
+     * The whole mesh on this rank: the coarse mesh (generated or read) and
+     * its global refinements, every level kept. create_mesh() partitions
+     * it; mesh deformation moves the vertices of this hierarchy and copies
+     * them into the distributed mesh.
+     */
+    template <int dim>
+    void
+    create_serial_mesh(const MeshParameters       &parameters,
+                       dealii::Triangulation<dim> &serial);
+
+    /**
      * Build the distributed mesh: every rank creates the coarse mesh
      * (generated, or read from a Gmsh `.msh`, UCD `.inp`/`.ucd` or Abaqus
      * `.inp` file), refines it globally, and takes its part of a partition

@@ -35,8 +35,8 @@ namespace particulate {
       unsigned int ode_steps = 20;
       /// robust method: largest change of the target size per step
       double step_ratio = 2.;
-      /// Laplace-alpha: project a coarse vertex whose distance to a surface
-      /// is below this fraction of its shortest edge
+      /// Laplace-alpha: project a vertex (any level) whose distance to a
+      /// surface is below this fraction of its shortest edge
       double projection_range = 0.45;
       /// no cell may end below this scaled Jacobian (or below its value
       /// before the move, if that was lower)

@@ -86,12 +86,14 @@ namespace particulate {
     };
 
     /**
-     * Laplace-alpha (thesis §5.7, figure 5.6): the vertices of the coarsest
-     * level that lie within `projection_range` times their shortest edge of a
-     * surface are put onto it; on every finer level the midpoints of edges
-     * whose ends are on the surface are projected onto it too; between
-     * levels a few weighted sweeps smooth the rest, the projected vertices
-     * held in place. Faces then follow the surface instead of cutting it.
+     * Laplace-alpha (thesis §5.7, figure 5.6): on every level, coarsest
+     * first, the vertices that lie within `projection_range` times their
+     * shortest edge of a surface are put onto it, and so are the midpoints
+     * of edges that run along the surface between two such vertices (not
+     * chords across the body); between levels a few weighted sweeps smooth
+     * the rest, the projected vertices held in place. Faces then follow the
+     * surface instead of cutting it, also around bodies smaller than the
+     * coarse cells.
      */
     template <int dim>
     class LaplaceAlpha : public MeshDeformation<dim>

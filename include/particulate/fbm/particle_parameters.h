@@ -1,6 +1,8 @@
 #ifndef particulate_fbm_particle_parameters_h
 #define particulate_fbm_particle_parameters_h
 
+#include <particulate/core/function_expression.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <Eigen/Core>
@@ -28,14 +30,18 @@ namespace particulate {
       /** How the particles move. */
       enum class Motion
       {
-        free, ///< Newton-Euler under fluid, gravity and contact forces
-        fixed ///< at rest (an obstacle described by the FBM)
+        free,      ///< Newton-Euler under fluid, gravity and contact forces
+        fixed,     ///< at rest (an obstacle described by the FBM)
+        prescribed ///< translated by a given displacement d(t)
       };
 
       Shape  shape   = Shape::sphere;
       double radius  = 0.0075; ///< [m]
       double density = 1120.;  ///< particle density rho_p [kg/m^3]
       Motion motion  = Motion::free;
+      /// Motion::prescribed: displacement from the initial position [m],
+      /// dim components of t
+      core::FunctionExpression prescribed_displacement;
       /// centres of mass [m] (z = 0 in 2D)
       std::vector<Eigen::Vector3d> positions;
       /// initial velocities [m/s], empty or one per particle
@@ -75,6 +81,12 @@ namespace particulate {
        */
       void
       parse(dealii::ParameterHandler &prm, const unsigned int dim);
+
+      bool
+      motion_is_fixed() const
+      {
+        return motion == Motion::fixed;
+      }
 
       unsigned int
       n_particles() const

@@ -2,6 +2,7 @@
 #define particulate_fbm_particulate_flow_simulation_h
 
 #include <particulate/core/checkpoint.h>
+#include <particulate/deformation/deformation_parameters.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/fluid/flow_simulation.h>
 
@@ -17,9 +18,11 @@ namespace particulate {
     /** Everything a `Simulation / Type = particulate flow` case reads. */
     struct ParticulateFlowParameters
     {
-      fluid::FlowCaseParameters  flow;
-      ParticleParameters         particles;
-      core::CheckpointParameters checkpoint;
+      fluid::FlowCaseParameters flow;
+      ParticleParameters        particles;
+      /// r-adaptivity of the flow mesh to the particles
+      deformation::DeformationParameters deformation;
+      core::CheckpointParameters         checkpoint;
       /// continue from the checkpoint in the output folder (--restart)
       bool restart = false;
 
@@ -67,6 +70,13 @@ namespace particulate {
      *     domain walls are fixed half-spaces.
      * The explicit coupling is stabilised for light particles by an
      * added-mass correction (doc/fbm.md).
+     *
+     * With subsection `Mesh deformation` the mesh is adapted to the
+     * particles (BodyAdaptedMesh) before the run, and when they move, at
+     * the start of every step, its velocity entering the flow's ALE term;
+     * `<output>/mesh.dat` logs the mesh quality. Prescribed particles
+     * (`Motion = prescribed`) are moved to t_n+1 first, so the fluid step
+     * sees them where they end it.
      *
      * With subsection `Checkpoint` set, the run saves its state (fluid
      * solution, bodies with their contact cache, the coupling's added-mass

@@ -18,6 +18,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -135,6 +136,20 @@ namespace particulate {
       set_mesh_velocity(const BlockVector &mesh_velocity);
 
       /**
+       * ALE: @p move_vertices moves the triangulation's vertices (keeping
+       * its connectivity) to where they are at the end of the next step of
+       * length @p time_step. The nodal values stay with their nodes; the
+       * mesh velocity w = (x_new - x_old) / time_step of every velocity
+       * node enters the convection (u - w).grad u of that step, and the
+       * matrices that depend only on the geometry (pressure mass, lumped
+       * velocity mass) are rebuilt. Every rank must move the vertices of
+       * its locally relevant cells alike.
+       */
+      void
+      move_mesh(const std::function<void()> &move_vertices,
+                const double                 time_step);
+
+      /**
        * Checkpoint: writes what the next advance() depends on, this rank's
        * part (locally owned entries of the current solution and of the
        * previous stage's start value used for extrapolation, and that
@@ -230,6 +245,9 @@ namespace particulate {
       make_constraints(const double time);
       void
       setup_matrices();
+      /** The pressure mass matrix and the lumped velocity mass. */
+      void
+      assemble_geometric_matrices();
       void
       assemble(const Stage &stage,
                const bool   assemble_matrix,

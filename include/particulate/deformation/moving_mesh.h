@@ -1,0 +1,91 @@
+#ifndef particulate_deformation_moving_mesh_h
+#define particulate_deformation_moving_mesh_h
+
+#include <particulate/core/mesh.h>
+#include <particulate/deformation/deformation_parameters.h>
+#include <particulate/deformation/mesh_deformation.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace particulate {
+  namespace deformation {
+    /**
+     * A flow mesh that follows moving bodies (thesis §6.3): every rank holds
+     * the whole refinement hierarchy of the case's mesh; each time step
+     * regularises it and adapts it to the bodies' new positions with the
+     * method of subsection `Mesh deformation`, and copies the vertex
+     * positions into the distributed mesh of the flow solver, cell by cell
+     * (matched by CellId).
+     *
+     * The thesis regularises by a few plain Laplacian sweeps before each
+     * re-adaptation. Measured on the oscillating cylinder (test
+     * deformation_moving_mesh), four sweeps per level leave the mesh
+     * depending on the path the body took: after a quarter period and back,
+     * vertices stood 0.17 m (13 fine cells) from where the same body
+     * position had put them. So the regularisation goes to its limit: every
+     * adaptation starts from the undeformed mesh (on the generated
+     * tensor-product meshes exactly where plain smoothing converges to),
+     * and the mesh is a function of where the bodies are.
+     */
+    template <int dim>
+    class MovingMesh
+    {
+    public:
+      /** Builds the hierarchy from @p mesh (as core::create_mesh() does).
+       *  Throws std::invalid_argument for `Method = none`. */
+      MovingMesh(const core::MeshParameters  &mesh,
+                 const DeformationParameters &parameters);
+
+      /**
+       * Adapt the undeformed mesh to the surfaces that @p distance
+       * describes. Throws DeformationError (mesh unchanged) when the method
+       * refuses.
+       */
+      DeformationReport
+      adapt(const DistanceField<dim> &distance);
+
+      /**
+       * Give every cell of @p tria (a partition of the same mesh, e.g. a
+       * parallel::fullydistributed::Triangulation made by
+       * core::create_mesh()) the vertex positions of its twin here.
+       */
+      void
+      copy_vertices_to(dealii::Triangulation<dim> &tria) const;
+
+      /** The hierarchy with its current vertex positions. */
+      const dealii::Triangulation<dim> &
+      hierarchy() const
+      {
+        return mesh;
+      }
+
+      /** The method's name for the log. */
+      std::string
+      method_name() const
+      {
+        return method->name();
+      }
+
+      /** Checkpoints: the vertex positions (binary). */
+      void
+      save(std::ostream &out) const;
+      /** Reads what save() wrote; throws std::runtime_error when the vertex
+       *  count differs. */
+      void
+      load(std::istream &in);
+
+    private:
+      dealii::Triangulation<dim>            mesh;
+      std::unique_ptr<MeshDeformation<dim>> method;
+      /// the vertex positions as the case's mesh made them
+      std::vector<dealii::Point<dim>> undeformed;
+    };
+  } // namespace deformation
+} // namespace particulate
+
+#endif

@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""Drag and lift of the oscillating cylinder (thesis §6.3) from several runs.
+
+Usage:
+    oscillating_cylinder.py LABEL=PATH [LABEL=PATH ...] [--doc DOC_DIR]
+
+PATH is either the output folder of a `particulate` run of
+prm/oscillating-cylinder/*.prm (its particle_0.dat holds the force F_x, F_y
+per unit depth) or the forces.dat of
+validation_oscillating_cylinder_body_fitted (c_d, c_l directly). The first
+body-fitted run given is the reference of the total-variation ratio.
+
+Prints, per run and per period of T = 4 s, the drag extrema beside the
+published +3.24 / -3.26 (Wan & Turek), the largest |c_l|, and the total
+variation of c_d over the period (how oscillatory the curve is). With
+--doc writes DOC_DIR/oscillating-cylinder-drag.png and -lift.png.
+"""
+import argparse
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+A, F, D, RHO = 0.25, 0.25, 0.1, 1.0
+U = 2 * 3.141592653589793 * F * A
+PERIOD = 1 / F
+PUBLISHED_MAX, PUBLISHED_MIN = 3.24, -3.26
+
+
+def read_table(path):
+    with open(path) as f:
+        header = f.readline().lstrip("#").split()
+        rows = [list(map(float, line.split())) for line in f
+                if line.strip() and not line.startswith("#")]
+    return {name: [r[i] for r in rows] for i, name in enumerate(header)}
+
+
+def coefficients(path):
+    """(t, c_d, c_l, body_fitted) of one run."""
+    if os.path.isdir(path):
+        table = read_table(os.path.join(path, "particle_0.dat"))
+        scale = 2 / (RHO * U * U * D)
+        return (table["time"], [scale * f for f in table["F_x"]],
+                [scale * f for f in table["F_y"]], False)
+    table = read_table(path)
+    return table["time"], table["c_d"], table["c_l"], True
+
+
+def per_period(t, c_d, c_l):
+    """Per complete (or the last, partial) period: extrema, |c_l|, TV."""
+    out = []
+    k = 0
+    while k * PERIOD < t[-1] - 1e-9:
+        idx = [i for i, s in enumerate(t)
+               if k * PERIOD < s <= (k + 1) * PERIOD + 1e-9]
+        # the first steps of the impulsive start are not part of the curve
+        if k == 0:
+            idx = [i for i in idx if t[i] > 0.1]
+        if len(idx) > 2:
+            d = [c_d[i] for i in idx]
+            tv = sum(abs(d[j + 1] - d[j]) for j in range(len(d) - 1))
+            out.append(dict(period=k + 1, end=t[idx[-1]], max=max(d),
+                            min=min(d),
+                            lift=max(abs(c_l[i]) for i in idx), tv=tv))
+        k += 1
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("runs", nargs="+", help="LABEL=PATH")
+    parser.add_argument("--doc", help="folder for the figures")
+    args = parser.parse_args()
+
+    runs = []
+    for item in args.runs:
+        label, path = item.split("=", 1)
+        runs.append((label, path) + coefficients(path))
+    reference_tv = {}
+    for label, _, t, c_d, c_l, fitted in runs:
+        if fitted and not reference_tv:
+            reference_tv = {p["period"]: p["tv"]
+                            for p in per_period(t, c_d, c_l)}
+
+    print("| run | period (until t) | max c_d (pub. +3.24) | min c_d "
+          "(pub. -3.26) | max abs c_l | TV(c_d) | TV / body-fitted |")
+    print("|---|---|---|---|---|---|---|")
+    for label, _, t, c_d, c_l, _ in runs:
+        for p in per_period(t, c_d, c_l):
+            ratio = (p["tv"] / reference_tv[p["period"]]
+                     if p["period"] in reference_tv else float("nan"))
+            print(f"| {label} | {p['period']} ({p['end']:.2f} s) | "
+                  f"{p['max']:+.3f} ({100 * (p['max'] / PUBLISHED_MAX - 1):+.1f} %) | "
+                  f"{p['min']:+.3f} ({100 * (p['min'] / PUBLISHED_MIN - 1):+.1f} %) | "
+                  f"{p['lift']:.3f} | {p['tv']:.2f} | {ratio:.2f} |")
+
+    if args.doc:
+        os.makedirs(args.doc, exist_ok=True)
+        for name, column, ylabel in (("drag", 3, "c_d"), ("lift", 4, "c_l")):
+            fig, ax = plt.subplots(figsize=(9, 4))
+            for run in runs:
+                ax.plot(run[2], run[column], lw=0.9, label=run[0])
+            if name == "drag":
+                for v in (PUBLISHED_MAX, PUBLISHED_MIN):
+                    ax.axhline(v, color="k", ls=":", lw=0.8)
+                ax.set_ylim(-5, 5)
+            else:
+                ax.set_ylim(-0.3, 0.3)
+            ax.set_xlabel("t [s]")
+            ax.set_ylabel(ylabel)
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=8)
+            ax.set_title(f"Oscillating cylinder: {ylabel} "
+                         "(dotted: published extrema, Wan & Turek)")
+            fig.tight_layout()
+            fig.savefig(os.path.join(args.doc,
+                                     f"oscillating-cylinder-{name}.png"),
+                        dpi=120)
+            plt.close(fig)
+
+
+if __name__ == "__main__":
+    main()
