@@ -547,8 +547,8 @@ namespace particulate {
       // Moving particles on an adapted mesh, and prescribed motion: the
       // mesh and the interface are updated at the start of each step.
       const bool mesh_follows = adapted_mesh && !particle_p.motion_is_fixed();
-      // Step 0 of a moving mesh: bodies at t_n (free) or t_n+1
-      // (prescribed) -> mesh and its velocity -> interface.
+      // The start of every step: bodies at t_n (free) or t_n+1
+      // (prescribed) -> adapted mesh and its velocity -> interface.
       const auto move_with_bodies = [&](const double t_new, const double k) {
         if (prescribed)
           for (unsigned int i = 0; i < n; ++i)
