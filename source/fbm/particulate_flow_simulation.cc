@@ -619,10 +619,14 @@ namespace particulate {
           while (t < time_p.end_time - eps)
             {
               dt = std::min(dt, time_p.end_time - t);
+              // everything of a step but output and diagnostics
+              timer.enter_subsection("coupled step (total)");
               move_with_bodies(t + dt, dt);
               // 1.-2. fluid with the particles' velocities at t_n
               const fluid::SolveStatistics stats
                 = flow.advance(t, dt, time_p.scheme);
+              summary.nonlinear_iterations += stats.nonlinear_iterations;
+              summary.linear_iterations += stats.linear_iterations;
               // 3. loads from the new flow field, with the interface at t_n
               update_loads();
               // 4. rigid bodies
@@ -712,6 +716,7 @@ namespace particulate {
               // 1. (next step) the interface at t_n+1
               if (!(prescribed || mesh_follows))
                 impose_particle_velocities();
+              timer.leave_subsection("coupled step (total)");
               record(t, dt, stats);
               const bool last = t >= time_p.end_time - eps;
               if ((flow_p.output.interval > 0
@@ -748,6 +753,16 @@ namespace particulate {
             << "/ (flow.pvd, particles.pvd, particle_*.dat, flow.dat)"
             << std::endl;
       timer.print_wall_time_statistics(communicator);
+      for (const auto &[section, seconds] :
+           timer.get_summary_data(TimerOutput::total_wall_time))
+        summary.phase_seconds[section]
+          = Utilities::MPI::max(seconds, communicator);
+      summary.phase_calls     = timer.get_summary_data(TimerOutput::n_calls);
+      summary.n_velocity_dofs = flow.n_velocity_dofs();
+      summary.flow_memory_bytes
+        = Utilities::MPI::sum(flow.memory_consumption(), communicator);
+      if (flow_inspector)
+        flow_inspector(flow);
       return summary;
     }
 

@@ -35,6 +35,13 @@ namespace particulate {
       output.parse(prm);
       mesh.parse(prm);
       fluid.parse(prm);
+      if (time.scheme == core::TimeParameters::Scheme::steady
+          && fluid.linear_solver.velocity_preconditioner == "Chebyshev")
+        throw std::runtime_error(
+          "subsection 'Linear solver': 'Velocity preconditioner = "
+          "Chebyshev' works only for time-dependent flow (the mass term "
+          "makes the velocity block easy); with 'Scheme = steady' in "
+          "subsection 'Time' set it to 'AMG'.");
     }
 
 

@@ -256,6 +256,23 @@ namespace particulate {
                         "Relative tolerance of the inner CG+AMG solves with "
                         "the pressure Laplacian L_p inside the Schur "
                         "complement approximation.");
+      prm.declare_entry(
+        "Velocity preconditioner",
+        "AMG",
+        Patterns::Selection("AMG|Chebyshev"),
+        "Approximate inverse of the velocity block inside the block "
+        "preconditioner. AMG: one V-cycle of Trilinos ML, robust for any "
+        "time step, but its set-up costs many Krylov iterations. Chebyshev: "
+        "a Jacobi-preconditioned Chebyshev polynomial of degree 'Chebyshev "
+        "degree' with eigenvalue bounds estimated by a few CG steps; no "
+        "set-up beyond that, and as good as AMG when the mass term rho/k "
+        "dominates the viscous one (rho h^2 / (theta k mu) >> 1, small time "
+        "steps), useless for steady or viscous-dominated flow.");
+      prm.declare_entry("Chebyshev degree",
+                        "4",
+                        Patterns::Integer(1, 50),
+                        "Degree of the Chebyshev velocity preconditioner "
+                        "(matrix-vector products per application).");
       prm.declare_entry("AMG elliptic",
                         "true",
                         Patterns::Bool(),
@@ -295,10 +312,12 @@ namespace particulate {
         = core::get_positive_double(prm,
                                     "Pressure Poisson tolerance",
                                     "Linear solver");
-      amg_elliptic        = prm.get_bool("AMG elliptic");
-      amg_smoother        = prm.get("AMG smoother");
-      amg_smoother_sweeps = prm.get_integer("AMG smoother sweeps");
-      verbose             = prm.get_bool("Verbose");
+      velocity_preconditioner = prm.get("Velocity preconditioner");
+      chebyshev_degree        = prm.get_integer("Chebyshev degree");
+      amg_elliptic            = prm.get_bool("AMG elliptic");
+      amg_smoother            = prm.get("AMG smoother");
+      amg_smoother_sweeps     = prm.get_integer("AMG smoother sweeps");
+      verbose                 = prm.get_bool("Verbose");
       prm.leave_subsection();
     }
 

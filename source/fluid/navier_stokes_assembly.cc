@@ -39,7 +39,10 @@ namespace particulate {
                                assemble_matrix ? "fluid: assemble matrix" :
                                                  "fluid: assemble residual");
       if (assemble_matrix)
-        system_matrix = 0;
+        {
+          system_matrix = 0;
+          velocity_chebyshev.reset(); // built from the matrix it approximates
+        }
       system_rhs = 0;
 
       const double rho         = parameters.properties.density;
@@ -92,7 +95,9 @@ namespace particulate {
           else
             pressure_index[index] = i;
         }
-      std::vector<double>         phi(n_s), advect_phi(n_s), psi(n_p);
+      std::vector<double> phi(n_s), advect_phi(n_s), psi(n_p), diagonal(n_s);
+      std::array<std::vector<double>, dim> grad_phi_by_component;
+      grad_phi_by_component.fill(std::vector<double>(n_s));
       std::vector<Tensor<1, dim>> grad_phi(n_s);
       // the local matrix by blocks: (c, d) velocity components
       std::vector<double> block_uu(dim * dim * n_s * n_s);
@@ -204,29 +209,46 @@ namespace particulate {
                 //             + ti rho phi_a (advecting.grad phi_b)]
                 //   + ti mu d_d phi_a d_c phi_b   (the transpose in D(u))
                 //   + ti rho d_d u_c phi_a phi_b  (Newton only)
+                // The loops run over b innermost on contiguous rows of the
+                // blocks (grad_phi stored by component), which the compiler
+                // vectorises; the Newton part is skipped when not needed.
                 const double viscous       = ti * mu * JxW;
                 const double newton_weight = newton ? ti * rho * JxW : 0.;
                 for (unsigned int b = 0; b < n_s; ++b)
-                  advect_phi[b] = ti * rho * (advecting * grad_phi[b]) * JxW;
+                  {
+                    advect_phi[b] = ti * rho * (advecting * grad_phi[b]) * JxW;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      grad_phi_by_component[d][b] = grad_phi[b][d];
+                  }
                 for (unsigned int a = 0; a < n_s; ++a)
                   {
                     const double mass_a = mass_coeff * phi[a] * JxW;
                     for (unsigned int b = 0; b < n_s; ++b)
-                      {
-                        const double diagonal
-                          = mass_a * phi[b]
-                            + viscous * (grad_phi[a] * grad_phi[b])
-                            + phi[a] * advect_phi[b];
-                        const double phi_ab = newton_weight * phi[a] * phi[b];
-                        for (unsigned int c = 0; c < dim; ++c)
-                          {
-                            for (unsigned int d = 0; d < dim; ++d)
-                              uu(c, d, a, b)
-                                += viscous * grad_phi[a][d] * grad_phi[b][c]
-                                   + phi_ab * grad_u[q][c][d];
-                            uu(c, c, a, b) += diagonal;
-                          }
-                      }
+                      diagonal[b] = mass_a * phi[b]
+                                    + viscous * (grad_phi[a] * grad_phi[b])
+                                    + phi[a] * advect_phi[b];
+                    for (unsigned int c = 0; c < dim; ++c)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        {
+                          double *const       row = &uu(c, d, a, 0);
+                          const double *const grad_c
+                            = grad_phi_by_component[c].data();
+                          const double transposed = viscous * grad_phi[a][d];
+                          if (newton)
+                            {
+                              const double convective
+                                = newton_weight * phi[a] * grad_u[q][c][d];
+                              for (unsigned int b = 0; b < n_s; ++b)
+                                row[b] += transposed * grad_c[b]
+                                          + convective * phi[b];
+                            }
+                          else
+                            for (unsigned int b = 0; b < n_s; ++b)
+                              row[b] += transposed * grad_c[b];
+                          if (c == d)
+                            for (unsigned int b = 0; b < n_s; ++b)
+                              row[b] += diagonal[b];
+                        }
                   }
                 for (unsigned int k = 0; k < n_p; ++k)
                   for (unsigned int d = 0; d < dim; ++d)

@@ -500,6 +500,33 @@ namespace particulate {
 
 
     template <int dim>
+    std::size_t
+    NavierStokes<dim>::memory_consumption() const
+    {
+      std::size_t bytes = 0;
+      for (unsigned int i = 0; i < system_matrix.n_block_rows(); ++i)
+        for (unsigned int j = 0; j < system_matrix.n_block_cols(); ++j)
+          bytes += system_matrix.block(i, j).memory_consumption()
+                   + pressure_mass.block(i, j).memory_consumption();
+      if (pressure_laplacian.m() > 0)
+        bytes += pressure_laplacian.memory_consumption();
+      if (velocity_amg)
+        bytes += velocity_amg->memory_consumption();
+      if (laplace_amg)
+        bytes += laplace_amg->memory_consumption();
+      for (const BlockVector *v : {&system_rhs,
+                                   &newton_update,
+                                   &solution,
+                                   &old_solution,
+                                   &mesh_velocity,
+                                   &previous_solution})
+        bytes += v->memory_consumption();
+      return bytes + inverse_lumped_mass.memory_consumption();
+    }
+
+
+
+    template <int dim>
     void
     NavierStokes<dim>::normalise_pressure()
     {

@@ -1,11 +1,13 @@
 #include <particulate/fluid/navier_stokes.h>
 
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -18,7 +20,9 @@ namespace particulate {
        * Approximate action of L_p^{-1} (the discrete pressure Laplacian):
        * conjugate gradients with an AMG preconditioner to a loose relative
        * tolerance. A single V-cycle is not enough for the least-squares
-       * commutator, which applies L_p^{-1} twice; a few CG steps are.
+       * commutator, which applies L_p^{-1} twice; a few CG steps are. For
+       * Cahouet-Chabard it is not enough either: on ten Cate E4 (level 1,
+       * dt = 1 ms) FGMRES then needed 3.5 times the iterations.
        */
       class PressurePoissonSolver
       {
@@ -67,7 +71,8 @@ namespace particulate {
        * Upper block-triangular preconditioner P = [A B^T; 0 -S] with
        * S = B A^{-1} B^T (B = -div, so S is positive):
        *   x_p = -S^{-1} r_p,   x_u = A^{-1} (r_u - B^T x_p),
-       * with one AMG V-cycle for A^{-1} and one of two approximations of
+       * with one AMG V-cycle or a Chebyshev polynomial for A^{-1} and one of
+       * two approximations of
        * S^{-1}:
        * - Cahouet-Chabard: theta_i mu M_p^{-1} + (rho/k) L_p^{-1};
        * - least-squares commutator: L_p^{-1} (B D^{-1} A D^{-1} B^T) L_p^{-1},
@@ -78,23 +83,29 @@ namespace particulate {
       public:
         using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
+        using VelocityInverse
+          = std::function<void(TrilinosWrappers::MPI::Vector &,
+                               const TrilinosWrappers::MPI::Vector &)>;
+
         BlockTriangularPreconditioner(
           const TrilinosWrappers::BlockSparseMatrix &matrix,
-          const TrilinosWrappers::PreconditionAMG   &velocity_amg,
+          const VelocityInverse                     &velocity_inverse,
           const TrilinosWrappers::PreconditionILU   &mass_inverse,
           const PressurePoissonSolver               &laplace_inverse,
           const TrilinosWrappers::MPI::Vector       &inverse_lumped_mass,
           const bool                                 least_squares_commutator,
           const double                               viscous_weight,
-          const double                               inertial_weight)
+          const double                               inertial_weight,
+          TimerOutput                               &timer)
           : matrix(matrix)
-          , velocity_amg(velocity_amg)
+          , velocity_inverse(velocity_inverse)
           , mass_inverse(mass_inverse)
           , laplace_inverse(laplace_inverse)
           , inverse_lumped_mass(inverse_lumped_mass)
           , least_squares_commutator(least_squares_commutator)
           , viscous_weight(viscous_weight)
           , inertial_weight(inertial_weight)
+          , timer(timer)
           , tmp_u(matrix.block(0, 0).locally_owned_range_indices(),
                   matrix.get_mpi_communicator())
           , tmp_u2(tmp_u)
@@ -105,44 +116,121 @@ namespace particulate {
         void
         vmult(BlockVector &dst, const BlockVector &src) const
         {
+          {
+            TimerOutput::Scope scope(timer, "fluid: Schur complement solves");
+            apply_schur_inverse(dst.block(1), src.block(1));
+          }
+          matrix.block(0, 1).vmult(tmp_u, dst.block(1));
+          tmp_u.sadd(-1., src.block(0));
+          TimerOutput::Scope scope(timer, "fluid: velocity preconditioner");
+          velocity_inverse(dst.block(0), tmp_u);
+        }
+
+      private:
+        /** dst = -S^{-1} src, approximately. */
+        void
+        apply_schur_inverse(TrilinosWrappers::MPI::Vector       &dst,
+                            const TrilinosWrappers::MPI::Vector &src) const
+        {
           if (least_squares_commutator)
             {
-              laplace_inverse.solve(tmp_p, src.block(1));
+              laplace_inverse.solve(tmp_p, src);
               matrix.block(0, 1).vmult(tmp_u, tmp_p);
               tmp_u.scale(inverse_lumped_mass);
               matrix.block(0, 0).vmult(tmp_u2, tmp_u);
               tmp_u2.scale(inverse_lumped_mass);
               matrix.block(1, 0).vmult(tmp_p, tmp_u2);
-              laplace_inverse.solve(dst.block(1), tmp_p);
-              dst.block(1) *= -1.;
+              laplace_inverse.solve(dst, tmp_p);
+              dst *= -1.;
             }
           else
             {
-              mass_inverse.vmult(dst.block(1), src.block(1));
-              dst.block(1) *= -viscous_weight;
+              mass_inverse.vmult(dst, src);
+              dst *= -viscous_weight;
               if (inertial_weight > 0.)
                 {
-                  laplace_inverse.solve(tmp_p, src.block(1));
-                  dst.block(1).add(-inertial_weight, tmp_p);
+                  laplace_inverse.solve(tmp_p, src);
+                  dst.add(-inertial_weight, tmp_p);
                 }
             }
-          matrix.block(0, 1).vmult(tmp_u, dst.block(1));
-          tmp_u.sadd(-1., src.block(0));
-          velocity_amg.vmult(dst.block(0), tmp_u);
         }
 
-      private:
         const TrilinosWrappers::BlockSparseMatrix &matrix;
-        const TrilinosWrappers::PreconditionAMG   &velocity_amg;
+        const VelocityInverse                     &velocity_inverse;
         const TrilinosWrappers::PreconditionILU   &mass_inverse;
         const PressurePoissonSolver               &laplace_inverse;
         const TrilinosWrappers::MPI::Vector       &inverse_lumped_mass;
         const bool                                 least_squares_commutator;
         const double                               viscous_weight;
         const double                               inertial_weight;
+        TimerOutput                               &timer;
         mutable TrilinosWrappers::MPI::Vector      tmp_u, tmp_u2, tmp_p;
       };
     } // namespace
+
+
+
+    namespace {
+      /** Multiplication by the inverse diagonal of a Trilinos matrix
+       *  (deal.II's DiagonalMatrix cannot be sized from one in 9.4). */
+      struct Jacobi
+      {
+        TrilinosWrappers::MPI::Vector inverse_diagonal;
+
+        void
+        vmult(TrilinosWrappers::MPI::Vector       &dst,
+              const TrilinosWrappers::MPI::Vector &src) const
+        {
+          dst = src;
+          dst.scale(inverse_diagonal);
+        }
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    struct NavierStokes<dim>::VelocityChebyshev
+    {
+      PreconditionChebyshev<TrilinosWrappers::SparseMatrix,
+                            TrilinosWrappers::MPI::Vector,
+                            Jacobi>
+        chebyshev;
+    };
+
+
+
+    /*
+     * The Chebyshev polynomial spans the eigenvalue range of D^{-1} A (D the
+     * diagonal of the velocity block A) that a few CG (Lanczos) steps
+     * estimate; with smoothing range 0 it uses the estimated smallest
+     * eigenvalue, so it acts as an approximate inverse, not a smoother. When
+     * the mass term dominates, D^{-1} A has a condition number near that of
+     * the Jacobi-scaled Q2 mass matrix (2.5^dim), whatever the mesh size.
+     */
+    template <int dim>
+    void
+    NavierStokes<dim>::build_velocity_chebyshev()
+    {
+      TimerOutput::Scope scope(timer, "fluid: velocity Chebyshev setup");
+      const auto        &A        = system_matrix.block(0, 0);
+      auto               jacobi   = std::make_shared<Jacobi>();
+      auto              &diagonal = jacobi->inverse_diagonal;
+      diagonal.reinit(owned_partitioning[0], communicator);
+      for (const auto row : owned_partitioning[0])
+        {
+          const double a = A.diag_element(row);
+          diagonal(row)  = a != 0. ? 1. / a : 1.;
+        }
+      diagonal.compress(VectorOperation::insert);
+      typename decltype(VelocityChebyshev::chebyshev)::AdditionalData data;
+      data.degree              = parameters.linear_solver.chebyshev_degree;
+      data.smoothing_range     = 0.;
+      data.eig_cg_n_iterations = 12;
+      data.preconditioner      = jacobi;
+      velocity_chebyshev       = std::make_shared<VelocityChebyshev>();
+      velocity_chebyshev->chebyshev.initialize(A, data);
+    }
 
 
 
@@ -183,16 +271,28 @@ namespace particulate {
     {
       if (!schur_approximation_is_current)
         build_schur_complement_approximation();
+      const bool use_chebyshev
+        = parameters.linear_solver.velocity_preconditioner == "Chebyshev";
       bool fresh = false;
-      if (!velocity_amg)
+      if (use_chebyshev)
+        {
+          if (!velocity_chebyshev)
+            build_velocity_chebyshev();
+          fresh = true; // built from this very matrix
+        }
+      else if (!velocity_amg)
         {
           build_velocity_preconditioner();
           fresh = true;
         }
 
-      TimerOutput::Scope          scope(timer, "fluid: linear solve");
-      const bool                  steady = stage.time_step == 0.;
-      const double                mu = viscosity_model->reference_viscosity();
+      TimerOutput::Scope scope(timer, "fluid: linear solve");
+      const bool         steady = stage.time_step == 0.;
+      const double       mu     = viscosity_model->reference_viscosity();
+      const bool         least_squares_commutator
+        = steady
+          || parameters.linear_solver.schur_approximation
+               == "least-squares commutator";
       const PressurePoissonSolver laplace_inverse(
         pressure_laplacian,
         *laplace_amg,
@@ -202,17 +302,24 @@ namespace particulate {
 
       while (true)
         {
+          const BlockTriangularPreconditioner::VelocityInverse velocity_inverse
+            = [&](TrilinosWrappers::MPI::Vector       &dst,
+                  const TrilinosWrappers::MPI::Vector &src) {
+                if (use_chebyshev)
+                  velocity_chebyshev->chebyshev.vmult(dst, src);
+                else
+                  velocity_amg->vmult(dst, src);
+              };
           const BlockTriangularPreconditioner preconditioner(
             system_matrix,
-            *velocity_amg,
+            velocity_inverse,
             *mass_ilu,
             laplace_inverse,
             inverse_lumped_mass,
-            steady
-              || parameters.linear_solver.schur_approximation
-                   == "least-squares commutator",
+            least_squares_commutator,
             stage.theta_implicit * mu,
-            steady ? 0. : parameters.properties.density / stage.time_step);
+            steady ? 0. : parameters.properties.density / stage.time_step,
+            timer);
           const unsigned int allowed
             = fresh ?
                 max_iterations :
@@ -250,6 +357,8 @@ namespace particulate {
             }
           zero_constraints.distribute(newton_update);
           const unsigned int iterations = control.last_step();
+          if (use_chebyshev)
+            return iterations;
           if (fresh)
             amg_reference_iterations = iterations;
           else if (iterations > 1.5 * amg_reference_iterations + 5)
@@ -277,10 +386,13 @@ namespace particulate {
 
       SolveStatistics stats;
       bool            newton = nl.method == "Newton";
-      assemble(stage, false, newton);
-      double       residual         = system_rhs.l2_norm();
-      const double initial_residual = residual;
-      const double target           = std::max(nl.absolute_tolerance,
+      // A stage nearly always needs at least one iteration: assembling the
+      // first matrix with the initial residual saves a residual assembly.
+      assemble(stage, true, newton);
+      bool         matrix_is_current = true;
+      double       residual          = system_rhs.l2_norm();
+      const double initial_residual  = residual;
+      const double target            = std::max(nl.absolute_tolerance,
                                      nl.relative_tolerance * initial_residual);
 
       // written so that a NaN residual enters the loop and is reported
@@ -305,7 +417,9 @@ namespace particulate {
                          "solver'.";
               throw std::runtime_error(message.str());
             }
-          assemble(stage, true, newton);
+          if (!matrix_is_current)
+            assemble(stage, true, newton);
+          matrix_is_current = false;
           const unsigned int linear_iterations
             = solve_linear(stage,
                            std::max(parameters.linear_solver.relative_tolerance

@@ -8,12 +8,20 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
+#include <functional>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <mpi.h>
 
 namespace particulate {
+  namespace fluid {
+    template <int dim>
+    class NavierStokes;
+  }
   namespace fbm {
     /** Everything a `Simulation / Type = particulate flow` case reads. */
     struct ParticulateFlowParameters
@@ -56,6 +64,17 @@ namespace particulate {
       /// per particle, the largest speed reached and when [m/s, s]
       std::vector<double> max_speed, time_of_max_speed;
       double              wall_seconds = 0.;
+
+      // for profiles (tests/performance/fbm)
+      /// wall seconds per timer section, the slowest rank's
+      std::map<std::string, double> phase_seconds;
+      /// how often each timer section ran (rank 0)
+      std::map<std::string, double> phase_calls;
+      /// summed over all steps and stages
+      unsigned long nonlinear_iterations = 0, linear_iterations = 0;
+      unsigned long n_velocity_dofs = 0;
+      /// the flow solver's matrices, preconditioners and vectors, all ranks
+      std::size_t flow_memory_bytes = 0;
     };
 
     /**
@@ -95,10 +114,22 @@ namespace particulate {
       ParticulateFlowSummary
       run();
 
+      /**
+       * @p inspector sees the flow solver at the end of run() (on every
+       * rank; benchmarks time its matrix there).
+       */
+      void
+      set_flow_inspector(
+        std::function<void(const fluid::NavierStokes<dim> &)> inspector)
+      {
+        flow_inspector = std::move(inspector);
+      }
+
     private:
-      const ParticulateFlowParameters &parameters;
-      const std::string                parameter_file;
-      MPI_Comm                         communicator;
+      std::function<void(const fluid::NavierStokes<dim> &)> flow_inspector;
+      const ParticulateFlowParameters                      &parameters;
+      const std::string                                     parameter_file;
+      MPI_Comm                                              communicator;
     };
   } // namespace fbm
 } // namespace particulate

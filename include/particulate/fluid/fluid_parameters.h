@@ -88,12 +88,15 @@ namespace particulate {
       unsigned int maximum_iterations = 1000;
       unsigned int krylov_size        = 100;
       /// "Cahouet-Chabard" or "least-squares commutator"
-      std::string  schur_approximation        = "Cahouet-Chabard";
-      double       pressure_poisson_tolerance = 1e-2;
-      bool         amg_elliptic               = true;
-      std::string  amg_smoother               = "Chebyshev";
-      unsigned int amg_smoother_sweeps        = 2;
-      bool         verbose                    = false;
+      std::string schur_approximation        = "Cahouet-Chabard";
+      double      pressure_poisson_tolerance = 1e-2;
+      /// "AMG" or "Chebyshev" (Jacobi-Chebyshev polynomial, no hierarchy)
+      std::string  velocity_preconditioner = "AMG";
+      unsigned int chebyshev_degree        = 4;
+      bool         amg_elliptic            = true;
+      std::string  amg_smoother            = "Chebyshev";
+      unsigned int amg_smoother_sweeps     = 2;
+      bool         verbose                 = false;
 
       static void
       declare(dealii::ParameterHandler &prm);

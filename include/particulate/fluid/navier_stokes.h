@@ -174,6 +174,20 @@ namespace particulate {
       void
       reset_preconditioners();
 
+      /**
+       * Bytes held by this rank's matrices, preconditioners and vectors
+       * (the performance benchmark reports it per DoF).
+       */
+      std::size_t
+      memory_consumption() const;
+
+      /** The matrix of the last linear solve (for benchmarks). */
+      const dealii::TrilinosWrappers::BlockSparseMatrix &
+      get_system_matrix() const
+      {
+        return system_matrix;
+      }
+
       /** Largest |u| dt / h over the locally owned cells, all ranks. */
       double
       cfl_number(const double time_step) const;
@@ -256,6 +270,8 @@ namespace particulate {
       build_schur_complement_approximation();
       void
       build_velocity_preconditioner();
+      void
+      build_velocity_chebyshev();
       unsigned int
       solve_linear(const Stage &stage, const double tolerance);
       void
@@ -315,6 +331,10 @@ namespace particulate {
       unsigned int amg_reference_iterations = 0;
 
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> velocity_amg;
+      /// Jacobi-Chebyshev approximation of the velocity block's inverse
+      /// (the alternative to velocity_amg), rebuilt with every matrix
+      struct VelocityChebyshev;
+      std::shared_ptr<VelocityChebyshev> velocity_chebyshev;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
     };

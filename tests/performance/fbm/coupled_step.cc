@@ -1,0 +1,278 @@
+// Benchmark (label performance): the cost of one coupled time step of the
+// fictitious boundary method on the ten Cate E4 set-up
+// (prm/ten-cate/ten-cate-e4.prm: quarter box, sphere settling from rest),
+// per refinement level, against the reference code's figures of issue 8.
+//
+// Per level it runs the case for a few steps with output off and prints
+//  - DoFs, velocity nodes, seconds per coupled step (everything of a step
+//    but output and diagnostics: the run's "coupled step (total)" timer
+//    section divided by the steps), and the issue's figure of merit,
+//    microseconds per velocity-node-step per core;
+//  - nonlinear and FGMRES iterations per step, velocity AMG set-ups;
+//  - memory: the flow solver's matrices, preconditioners and vectors per
+//    DoF, and the peak resident set of all ranks per DoF;
+//  - bandwidth: a STREAM-like copy (read + write bytes) and read on all
+//    ranks at once, and what the product with the final system matrix achieves
+//    (its bytes, values and column indices, over its time); the peak
+//    resident set is a high-water mark, so list the levels coarse to fine;
+//  - the per-phase profile of the run's timers.
+// The default is the reference's set-up (Crank-Nicolson, dt = 1 ms).
+// Never gates on time.
+//
+// Usage: mpirun -np 2 bench_coupled_step [--steps N]
+//          [--scheme "Crank-Nicolson"|"fractional-step theta"]
+//          [--time-step k] [--set "subsection...end"] level...
+
+#include <particulate/fbm/particulate_flow_simulation.h>
+#include <particulate/fluid/navier_stokes.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+
+using namespace dealii;
+using namespace particulate;
+
+namespace {
+  using Clock = std::chrono::steady_clock;
+
+  double
+  seconds_since(const Clock::time_point start)
+  {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  }
+
+  /** Copy bandwidth of all ranks at once [GB/s, read + write], best of 5. */
+  double
+  stream_copy_bandwidth(MPI_Comm comm)
+  {
+    const std::size_t   n = std::size_t(1) << 25; // 256 MiB per array
+    std::vector<double> a(n, 1.), b(n, 0.);
+    double              best = 1e30;
+    for (unsigned int repeat = 0; repeat < 5; ++repeat)
+      {
+        MPI_Barrier(comm);
+        const auto start = Clock::now();
+        std::copy(a.begin(), a.end(), b.begin());
+        MPI_Barrier(comm);
+        best      = std::min(best, seconds_since(start));
+        a[repeat] = b[n - 1 - repeat]; // keep the copies observable
+      }
+    const double bytes
+      = 2. * n * sizeof(double) * Utilities::MPI::n_mpi_processes(comm);
+    return bytes / best / 1e9;
+  }
+
+  /** Read bandwidth of all ranks at once [GB/s] (a sum over an array),
+   *  best of 5: what a matrix-vector product could reach at most. */
+  double
+  stream_read_bandwidth(MPI_Comm comm)
+  {
+    const std::size_t         n = std::size_t(1) << 26; // 512 MiB
+    const std::vector<double> a(n, 1.);
+    double                    best = 1e30, sum = 0.;
+    for (unsigned int repeat = 0; repeat < 5; ++repeat)
+      {
+        MPI_Barrier(comm);
+        const auto start = Clock::now();
+        // eight independent sums, so that the adds do not wait on each
+        // other and the loads set the pace
+        double partial[8] = {0., 0., 0., 0., 0., 0., 0., 0.};
+        for (std::size_t i = 0; i < n; i += 8)
+          for (unsigned int j = 0; j < 8; ++j)
+            partial[j] += a[i + j];
+        for (const double p : partial)
+          sum += p;
+        MPI_Barrier(comm);
+        best = std::min(best, seconds_since(start));
+      }
+    if (sum != 5. * n) // keeps the sums from being optimised away
+      std::cerr << "read bandwidth: wrong sum" << std::endl;
+    return double(n) * sizeof(double) * Utilities::MPI::n_mpi_processes(comm)
+           / best / 1e9;
+  }
+
+  /** Achieved bandwidth of y = A x with the system matrix [GB/s]; its
+   *  values and column indices, all ranks, into @p matrix_bytes. */
+  double
+  matrix_vector_bandwidth(const fluid::NavierStokes<3> &flow,
+                          double                       &matrix_bytes)
+  {
+    const auto &A = flow.get_system_matrix();
+    auto        x = flow.make_owned_vector();
+    auto        y = flow.make_owned_vector();
+    x             = 1.;
+    double bytes  = 0.;
+    for (unsigned int i = 0; i < A.n_block_rows(); ++i)
+      for (unsigned int j = 0; j < A.n_block_cols(); ++j)
+        // values and column indices of all ranks (the count is global);
+        // row pointers and the vectors are small against them
+        bytes += A.block(i, j).n_nonzero_elements() * (8. + 4.);
+    const MPI_Comm comm = flow.get_communicator();
+    matrix_bytes        = bytes;
+    MPI_Barrier(comm);
+    const auto         start       = Clock::now();
+    const unsigned int repetitions = 20;
+    for (unsigned int r = 0; r < repetitions; ++r)
+      A.vmult(y, x);
+    MPI_Barrier(comm);
+    return repetitions * bytes / seconds_since(start) / 1e9;
+  }
+
+  double
+  peak_resident_bytes(MPI_Comm comm)
+  {
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    return Utilities::MPI::sum(1024. * usage.ru_maxrss, comm);
+  }
+
+  double
+  phase(const fbm::ParticulateFlowSummary &s, const std::string &name)
+  {
+    const auto it = s.phase_seconds.find(name);
+    return it == s.phase_seconds.end() ? 0. : it->second;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  const bool                root = Utilities::MPI::this_mpi_process(comm) == 0;
+  const auto                n_ranks = Utilities::MPI::n_mpi_processes(comm);
+  unsigned int              steps   = 10;
+  std::string               scheme  = "Crank-Nicolson", extra;
+  double                    k       = 0.001;
+  std::vector<unsigned int> levels;
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "--steps" && i + 1 < argc)
+        steps = std::atoi(argv[++i]);
+      else if (arg == "--scheme" && i + 1 < argc)
+        scheme = argv[++i];
+      else if (arg == "--time-step" && i + 1 < argc)
+        k = std::atof(argv[++i]);
+      else if (arg == "--set" && i + 1 < argc)
+        extra += std::string(argv[++i]) + "\n";
+      else
+        levels.push_back(std::atoi(arg.c_str()));
+    }
+  if (levels.empty())
+    levels = {1};
+
+  const char       *source = std::getenv("PARTICULATE_SOURCE_DIR");
+  const std::string case_file
+    = std::string(source ? source : ".") + "/prm/ten-cate/ten-cate-e4.prm";
+
+  struct Row
+  {
+    unsigned int                level;
+    fbm::ParticulateFlowSummary summary;
+    double step_seconds, spmv_bandwidth, resident, matrix_bytes;
+  };
+  std::vector<Row> rows;
+  for (const unsigned int level : levels)
+    {
+      auto p = fbm::read_particulate_flow_case(
+        case_file,
+        "subsection Mesh\n set Refinements = " + std::to_string(level)
+          + "\nend\nsubsection Time\n set Scheme = " + scheme
+          + "\n set Time step = " + std::to_string(k) + "\n set End time = "
+          + std::to_string(steps * k) + "\nend\n" + extra);
+      p.flow.output.directory = "bench_coupled_step_run";
+      p.flow.output.write_vtu = false;
+      std::filesystem::create_directories(p.flow.output.directory);
+      fbm::ParticulateFlowSimulation<3> simulation(p, case_file, comm);
+      double                            spmv = 0., matrix_bytes = 0.;
+      simulation.set_flow_inspector([&](const fluid::NavierStokes<3> &flow) {
+        spmv = matrix_vector_bandwidth(flow, matrix_bytes);
+      });
+      std::cout.setstate(std::ios::failbit); // the run's own log
+      const auto summary = simulation.run();
+      std::cout.clear();
+      rows.push_back({level,
+                      summary,
+                      phase(summary, "coupled step (total)") / summary.n_steps,
+                      spmv,
+                      peak_resident_bytes(comm),
+                      matrix_bytes});
+    }
+  // after the runs, so that its arrays do not count in their peak memory
+  const double stream  = stream_copy_bandwidth(comm);
+  const double reading = stream_read_bandwidth(comm);
+  if (!root)
+    return 0;
+
+  std::printf("ten Cate E4, quarter box, %s, dt = %g s, %u steps per level, "
+              "%u MPI ranks\nSTREAM-like bandwidth, all ranks at once: copy "
+              "%.1f GB/s (read + write), read %.1f GB/s\n\n",
+              scheme.c_str(),
+              k,
+              steps,
+              n_ranks,
+              stream,
+              reading);
+  std::printf("| level | cells/D | DoFs | velocity nodes | s per step | "
+              "us per velocity-node-step per core | nonlinear its/step | "
+              "FGMRES its/step | AMG set-ups | system matrix B/DoF | solver "
+              "memory B/DoF | peak RSS B/DoF | SpMV GB/s (%% of read) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto &r : rows)
+    {
+      const auto  &s     = r.summary;
+      const double nodes = s.n_velocity_dofs / 3.;
+      std::printf(
+        "| %u | %d | %lu | %.0f | %.3f | %.1f | %.2f | %.1f | %.0f | %.0f | "
+        "%.0f | %.0f | %.1f (%.0f %%) |\n",
+        r.level,
+        3 << r.level,
+        s.n_dofs,
+        nodes,
+        r.step_seconds,
+        r.step_seconds * n_ranks / nodes * 1e6,
+        double(s.nonlinear_iterations) / s.n_steps,
+        double(s.linear_iterations) / s.n_steps,
+        s.phase_calls.count("fluid: velocity AMG setup") ?
+          s.phase_calls.at("fluid: velocity AMG setup") :
+          0.,
+        r.matrix_bytes / s.n_dofs,
+        double(s.flow_memory_bytes) / s.n_dofs,
+        r.resident / s.n_dofs,
+        r.spmv_bandwidth,
+        100. * r.spmv_bandwidth / reading);
+    }
+  std::printf("\nPer phase, seconds per step (slowest rank; nested sections "
+              "are part of the one above them):\n\n| phase |");
+  for (const auto &r : rows)
+    std::printf(" level %u |", r.level);
+  std::printf("\n|---|");
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    std::printf("---|");
+  std::printf("\n");
+  std::vector<std::string> names;
+  for (const auto &r : rows)
+    for (const auto &[name, seconds] : r.summary.phase_seconds)
+      if (std::find(names.begin(), names.end(), name) == names.end())
+        names.push_back(name);
+  for (const auto &name : names)
+    {
+      std::printf("| %s |", name.c_str());
+      for (const auto &r : rows)
+        std::printf(" %.4f |", phase(r.summary, name) / r.summary.n_steps);
+      std::printf("\n");
+    }
+  return 0;
+}
