@@ -15,25 +15,10 @@
 using namespace particulate;
 
 namespace {
-  fluid::FlowCaseParameters
-  read(const std::string &case_name, const std::string &extra)
-  {
-    dealii::ParameterHandler prm;
-    fluid::FlowCaseParameters::declare(prm);
-    core::parse_input_file(prm,
-                           testing::source_path("prm/" + case_name + "/"
-                                                + case_name + ".prm"));
-    std::istringstream overrides(extra);
-    prm.parse_input(overrides, "overrides");
-    fluid::FlowCaseParameters parameters;
-    parameters.parse(prm);
-    return parameters;
-  }
-
   fluid::FlowRunSummary
   run(const std::string &extra, const std::string &output)
   {
-    auto parameters             = read("dfg-2d-2", extra);
+    auto parameters             = testing::library_case("dfg-2d-2", extra);
     parameters.output.directory = output;
     parameters.output.write_vtu = false;
     std::filesystem::create_directories(output);
@@ -76,9 +61,10 @@ main(int argc, char **argv)
   bool refused = false;
   try
     {
-      read("dfg-2d-1",
-           "subsection Linear solver\n set Velocity preconditioner = "
-           "Chebyshev\nend\n");
+      testing::library_case(
+        "dfg-2d-1",
+        "subsection Linear solver\n set Velocity preconditioner = "
+        "Chebyshev\nend\n");
     }
   catch (const std::runtime_error &e)
     {

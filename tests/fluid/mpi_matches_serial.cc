@@ -19,15 +19,7 @@ namespace {
       MPI_Comm           comm,
       const std::string &output)
   {
-    dealii::ParameterHandler prm;
-    fluid::FlowCaseParameters::declare(prm);
-    core::parse_input_file(prm,
-                           testing::source_path("prm/" + case_name + "/"
-                                                + case_name + ".prm"));
-    std::istringstream overrides(extra);
-    prm.parse_input(overrides, "overrides");
-    fluid::FlowCaseParameters parameters;
-    parameters.parse(prm);
+    auto parameters             = testing::library_case(case_name, extra);
     parameters.output.directory = output;
     parameters.output.write_vtu = false;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)

@@ -45,6 +45,22 @@ namespace particulate {
       return std::string(root ? root : ".") + "/" + relative;
     }
 
+    /** The library case prm/<name>/<name>.prm with @p overrides (.prm
+     *  text) applied. */
+    inline fluid::FlowCaseParameters
+    library_case(const std::string &name, const std::string &overrides)
+    {
+      dealii::ParameterHandler prm;
+      fluid::FlowCaseParameters::declare(prm);
+      core::parse_input_file(prm,
+                             source_path("prm/" + name + "/" + name + ".prm"));
+      std::istringstream text(overrides);
+      prm.parse_input(text, "overrides");
+      fluid::FlowCaseParameters parameters;
+      parameters.parse(prm);
+      return parameters;
+    }
+
     /** Print one check and remember whether it failed. */
     class Checker
     {
