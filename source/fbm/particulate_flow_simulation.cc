@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace particulate {
@@ -620,7 +621,8 @@ namespace particulate {
             {
               dt = std::min(dt, time_p.end_time - t);
               // everything of a step but output and diagnostics
-              timer.enter_subsection("coupled step (total)");
+              std::optional<TimerOutput::Scope> step_scope;
+              step_scope.emplace(timer, "coupled step (total)");
               move_with_bodies(t + dt, dt);
               // 1.-2. fluid with the particles' velocities at t_n
               const fluid::SolveStatistics stats
@@ -716,7 +718,7 @@ namespace particulate {
               // 1. (next step) the interface at t_n+1
               if (!(prescribed || mesh_follows))
                 impose_particle_velocities();
-              timer.leave_subsection("coupled step (total)");
+              step_scope.reset();
               record(t, dt, stats);
               const bool last = t >= time_p.end_time - eps;
               if ((flow_p.output.interval > 0
