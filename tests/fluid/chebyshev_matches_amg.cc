@@ -14,18 +14,6 @@
 
 using namespace particulate;
 
-namespace {
-  fluid::FlowRunSummary
-  run(const std::string &extra, const std::string &output)
-  {
-    auto parameters             = testing::library_case("dfg-2d-2", extra);
-    parameters.output.directory = output;
-    parameters.output.write_vtu = false;
-    std::filesystem::create_directories(output);
-    fluid::FlowSimulation<2> simulation(parameters, "dfg-2d-2", MPI_COMM_SELF);
-    return simulation.run();
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -40,11 +28,17 @@ main(int argc, char **argv)
       " set Relative tolerance = 1e-12\nend\n"
       "subsection Linear solver\n set Relative tolerance = 1e-8\n"
       " set Pressure Poisson tolerance = 1e-8\n";
-  const auto amg = run(tight + " set Velocity preconditioner = AMG\nend\n",
-                       "chebyshev_matches_amg_amg");
-  const auto chebyshev
-    = run(tight + " set Velocity preconditioner = Chebyshev\nend\n",
-          "chebyshev_matches_amg_chebyshev");
+  const auto amg
+    = testing::run_library_case("dfg-2d-2",
+                                tight
+                                  + " set Velocity preconditioner = AMG\nend\n",
+                                MPI_COMM_SELF,
+                                "chebyshev_matches_amg_amg");
+  const auto chebyshev = testing::run_library_case(
+    "dfg-2d-2",
+    tight + " set Velocity preconditioner = Chebyshev\nend\n",
+    MPI_COMM_SELF,
+    "chebyshev_matches_amg_chebyshev");
   checker.check_relative(chebyshev.drag_coefficient,
                          amg.drag_coefficient,
                          1e-8,

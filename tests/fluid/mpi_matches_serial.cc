@@ -12,23 +12,6 @@
 
 using namespace particulate;
 
-namespace {
-  fluid::FlowRunSummary
-  run(const std::string &case_name,
-      const std::string &extra,
-      MPI_Comm           comm,
-      const std::string &output)
-  {
-    auto parameters             = testing::library_case(case_name, extra);
-    parameters.output.directory = output;
-    parameters.output.write_vtu = false;
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      std::filesystem::create_directories(output);
-    MPI_Barrier(comm);
-    fluid::FlowSimulation<2> simulation(parameters, case_name, comm);
-    return simulation.run();
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -54,11 +37,16 @@ main(int argc, char **argv)
        {std::pair<std::string, std::string>{"dfg-2d-1", tight},
         std::pair<std::string, std::string>{"dfg-2d-2", unsteady}})
     {
-      const auto parallel
-        = run(case_name, extra, MPI_COMM_WORLD, case_name + "_parallel");
+      const auto            parallel = testing::run_library_case(case_name,
+                                                      extra,
+                                                      MPI_COMM_WORLD,
+                                                      case_name + "_parallel");
       fluid::FlowRunSummary serial;
       if (rank == 0)
-        serial = run(case_name, extra, MPI_COMM_SELF, case_name + "_serial");
+        serial = testing::run_library_case(case_name,
+                                           extra,
+                                           MPI_COMM_SELF,
+                                           case_name + "_serial");
       if (rank == 0)
         {
           checker.check_relative(parallel.drag_coefficient,

@@ -61,6 +61,25 @@ namespace particulate {
       return parameters;
     }
 
+    /** Run the library case @p name with @p overrides on @p comm, output
+     *  (no VTU) into @p output. */
+    template <int dim = 2>
+    fluid::FlowRunSummary
+    run_library_case(const std::string &name,
+                     const std::string &overrides,
+                     MPI_Comm           comm,
+                     const std::string &output)
+    {
+      auto parameters             = library_case(name, overrides);
+      parameters.output.directory = output;
+      parameters.output.write_vtu = false;
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        std::filesystem::create_directories(output);
+      MPI_Barrier(comm);
+      fluid::FlowSimulation<dim> simulation(parameters, name, comm);
+      return simulation.run();
+    }
+
     /** Print one check and remember whether it failed. */
     class Checker
     {
