@@ -12,10 +12,43 @@
 namespace particulate::geometry {
 
   namespace {
-    constexpr char magic[8] = {'P', 'T', 'D', 'M', 'A', 'P', '0', '1'};
+    // 02: values in single precision (01 held doubles).
+    constexpr char magic[8] = {'P', 'T', 'D', 'M', 'A', 'P', '0', '2'};
     // 2: signs from the exact side test (maps of version 1 may hold wrong
-    // signs near thin features); bump whenever the content would change.
-    constexpr std::uint64_t format_version = 2;
+    // signs near thin features); 3: single-precision values. Bump whenever
+    // the content would change.
+    constexpr std::uint64_t format_version = 3;
+
+    // Points located (and their cells prefetched) at a time by
+    // DistanceMap::distances(): enough that the memory accesses of a group
+    // overlap, few enough that the group's cells are still in the L1 cache
+    // when they are interpolated (16 points x 8 lines x 64 bytes = 8 kB).
+    constexpr std::size_t batch = 16;
+
+    // The two values (or normals) of an edge along x: grid points (i, j, k)
+    // and (i + 1, j, k) are adjacent in memory, so the interpolation works on
+    // these pairs (two lanes of a SIMD register).
+    inline Eigen::Array2d
+    x_pair(const float *v)
+    {
+      return Eigen::Array2d(v[0], v[1]);
+    }
+
+    // Trilinear interpolation from the four x-edges of a cell, (y, z) =
+    // (0, 0), (1, 0), (0, 1), (1, 1): along z, then y, leaving the two ends
+    // of one x-edge.
+    template <typename Pair>
+    inline Pair
+    interpolate_yz(const Pair   &e00,
+                   const Pair   &e10,
+                   const Pair   &e01,
+                   const Pair   &e11,
+                   const double *f)
+    {
+      const Pair e0 = e00 + f[2] * (e01 - e00);
+      const Pair e1 = e10 + f[2] * (e11 - e10);
+      return e0 + f[1] * (e1 - e0);
+    }
 
     std::uint64_t
     mix(std::uint64_t h, const void *data, const std::size_t n)
@@ -98,7 +131,7 @@ namespace particulate::geometry {
             for (int i = 0; i < map.n[0]; ++i)
               {
                 const std::size_t id = map.index(i, j, k);
-                map.values[id]       = dist[i];
+                map.values[id]       = static_cast<float>(dist[i]);
                 for (int d = 0; d < 3; ++d)
                   map.normals[3 * id + d] = static_cast<float>(nrm[i][d]);
               }
@@ -183,81 +216,135 @@ namespace particulate::geometry {
   void
   DistanceMap::finish_setup()
   {
-    x1    = x0 + h * Eigen::Vector3d(n[0] - 1, n[1] - 1, n[2] - 1);
     inv_h = 1. / h;
+    for (int d = 0; d < 3; ++d)
+      {
+        last_point[d] = n[d] - 1;
+        last_cell[d]  = n[d] - 2;
+      }
+  }
+
+  void
+  DistanceMap::check_not_empty(const char *caller) const
+  {
+    if (values.empty())
+      throw GeometryError(std::string("DistanceMap::") + caller
+                          + ": the map is empty; build or load it first.");
+  }
+
+  inline DistanceMap::CellPosition
+  DistanceMap::locate(const Eigen::Vector3d &p) const
+  {
+    // O(1) cell location without branches: clamp the grid coordinate to the
+    // grid box (points outside get the value at the nearest box point plus
+    // their distance to the box). std::max(0., s) is 0 for s = NaN, so a
+    // NaN point reads a valid cell and returns NaN, never memory outside.
+    CellPosition c;
+    c.outside2 = 0.;
+    std::size_t i[3];
+    for (int d = 0; d < 3; ++d)
+      {
+        const double s       = (p[d] - x0[d]) * inv_h;
+        const double clamped = std::min(std::max(0., s), last_point[d]);
+        // clamped >= 0: truncation = floor; the last grid point belongs to
+        // the last cell.
+        const int cell = std::min(static_cast<int>(clamped), last_cell[d]);
+        i[d]           = static_cast<std::size_t>(cell);
+        c.f[d]         = clamped - cell;
+        c.outside2 += (s - clamped) * (s - clamped);
+      }
+    c.base = i[0] + static_cast<std::size_t>(n[0]) * (i[1] + n[1] * i[2]);
+    return c;
+  }
+
+  inline double
+  DistanceMap::interpolate_distance(const CellPosition &c) const
+  {
+    const std::size_t    sy = n[0], sz = sy * n[1];
+    const float         *v    = values.data() + c.base;
+    const Eigen::Array2d edge = interpolate_yz(x_pair(v),
+                                               x_pair(v + sy),
+                                               x_pair(v + sz),
+                                               x_pair(v + sy + sz),
+                                               c.f);
+    const double         d    = edge[0] + c.f[0] * (edge[1] - edge[0]);
+    // Outside the grid box (rare, so a predictable branch; NaN takes it).
+    return c.outside2 != 0. ? d + h * std::sqrt(c.outside2) : d;
+  }
+
+  inline Eigen::Vector3d
+  DistanceMap::interpolate_normal(const CellPosition &c) const
+  {
+    const std::size_t sy = 3 * std::size_t(n[0]), sz = sy * n[1];
+    const float      *g = normals.data() + 3 * c.base;
+    Eigen::Vector3d   m;
+    for (int d = 0; d < 3; ++d)
+      {
+        // Component d of the two normals of each x-edge: g[d] and g[d + 3].
+        auto pair = [&](const std::size_t offset) {
+          return Eigen::Array2d(g[offset + d], g[offset + d + 3]);
+        };
+        const Eigen::Array2d edge
+          = interpolate_yz(pair(0), pair(sy), pair(sz), pair(sy + sz), c.f);
+        m[d] = edge[0] + c.f[0] * (edge[1] - edge[0]);
+      }
+    const double len2 = m.squaredNorm();
+    // Zero only where the normals of the corners cancel (on a medial
+    // surface); any unit vector is as good as another there.
+    return len2 > 0. ? Eigen::Vector3d(m / std::sqrt(len2)) :
+                       Eigen::Vector3d::UnitX();
   }
 
   double
   DistanceMap::distance(const Eigen::Vector3d &p, Eigen::Vector3d *normal) const
   {
-    if (values.empty())
-      throw GeometryError("DistanceMap::distance: the map is empty; build or "
-                          "load it first.");
-    // Locate the cell in O(1); outside the grid box, clamp and add the
-    // distance to the box.
-    double      f[3], extra2 = 0.;
-    std::size_t c[3];
-    for (int d = 0; d < 3; ++d)
-      {
-        double q = p[d];
-        if (q < x0[d])
-          {
-            extra2 += (x0[d] - q) * (x0[d] - q);
-            q = x0[d];
-          }
-        else if (q > x1[d])
-          {
-            extra2 += (q - x1[d]) * (q - x1[d]);
-            q = x1[d];
-          }
-        const double s = (q - x0[d]) * inv_h;
-        int          i = static_cast<int>(s); // s >= 0: truncation = floor
-        i              = std::min(i, n[d] - 2);
-        c[d]           = static_cast<std::size_t>(i);
-        f[d]           = s - i;
-      }
-    const std::size_t sx = 1, sy = n[0], sz = std::size_t(n[0]) * n[1];
-    const std::size_t base  = c[0] + sy * c[1] + sz * c[2];
-    const std::size_t id[8] = {base,
-                               base + sx,
-                               base + sy,
-                               base + sx + sy,
-                               base + sz,
-                               base + sx + sz,
-                               base + sy + sz,
-                               base + sx + sy + sz};
-    const double      gx = 1. - f[0], gy = 1. - f[1], gz = 1. - f[2];
-    const double      w[8] = {gx * gy * gz,
-                              f[0] * gy * gz,
-                              gx * f[1] * gz,
-                              f[0] * f[1] * gz,
-                              gx * gy * f[2],
-                              f[0] * gy * f[2],
-                              gx * f[1] * f[2],
-                              f[0] * f[1] * f[2]};
-    double            dist = 0.;
-    for (int k = 0; k < 8; ++k)
-      dist += w[k] * values[id[k]];
+    check_not_empty("distance");
+    const CellPosition c = locate(p);
     if (normal)
+      *normal = interpolate_normal(c);
+    return interpolate_distance(c);
+  }
+
+  void
+  DistanceMap::distances(const Eigen::Vector3d *points,
+                         const std::size_t      count,
+                         double                *out,
+                         Eigen::Vector3d       *normal_out) const
+  {
+    if (count == 0)
+      return;
+    check_not_empty("distances");
+    const std::size_t sy = n[0], sz = sy * n[1];
+    CellPosition      cells[batch];
+    for (std::size_t first = 0; first < count; first += batch)
       {
-        double nx = 0., ny = 0., nz = 0.;
-        for (int k = 0; k < 8; ++k)
+        const std::size_t m = std::min(batch, count - first);
+        // Locate the group and ask for the four x-edges of each cell (and of
+        // the normal grid), so that the cache misses of the group overlap
+        // instead of stalling one query after the other.
+        for (std::size_t q = 0; q < m; ++q)
           {
-            const float *g = &normals[3 * id[k]];
-            nx += w[k] * g[0];
-            ny += w[k] * g[1];
-            nz += w[k] * g[2];
+            cells[q]       = locate(points[first + q]);
+            const float *v = values.data() + cells[q].base;
+            __builtin_prefetch(v);
+            __builtin_prefetch(v + sy);
+            __builtin_prefetch(v + sz);
+            __builtin_prefetch(v + sy + sz);
+            if (normal_out)
+              {
+                const float *g = normals.data() + 3 * cells[q].base;
+                __builtin_prefetch(g);
+                __builtin_prefetch(g + 3 * sy);
+                __builtin_prefetch(g + 3 * sz);
+                __builtin_prefetch(g + 3 * (sy + sz));
+              }
           }
-        const double len2 = nx * nx + ny * ny + nz * nz;
-        if (len2 > 0.)
-          {
-            const double inv = 1. / std::sqrt(len2);
-            *normal          = Eigen::Vector3d(nx * inv, ny * inv, nz * inv);
-          }
-        else
-          *normal = Eigen::Vector3d::UnitX();
+        for (std::size_t q = 0; q < m; ++q)
+          out[first + q] = interpolate_distance(cells[q]);
+        if (normal_out)
+          for (std::size_t q = 0; q < m; ++q)
+            normal_out[first + q] = interpolate_normal(cells[q]);
       }
-    return extra2 > 0. ? dist + std::sqrt(extra2) : dist;
   }
 
   double
@@ -312,7 +399,7 @@ namespace particulate::geometry {
   std::size_t
   DistanceMap::memory_bytes() const
   {
-    return values.size() * sizeof(double) + normals.size() * sizeof(float);
+    return values.size() * sizeof(float) + normals.size() * sizeof(float);
   }
 
   void
@@ -331,7 +418,7 @@ namespace particulate::geometry {
     out.write(reinterpret_cast<const char *>(dims), sizeof(dims));
     out.write(reinterpret_cast<const char *>(geo), sizeof(geo));
     out.write(reinterpret_cast<const char *>(values.data()),
-              values.size() * sizeof(double));
+              values.size() * sizeof(float));
     out.write(reinterpret_cast<const char *>(normals.data()),
               normals.size() * sizeof(float));
     if (!out)
@@ -362,7 +449,9 @@ namespace particulate::geometry {
     in.read(reinterpret_cast<char *>(dims), sizeof(dims));
     in.read(reinterpret_cast<char *>(geo), sizeof(geo));
     if (!in || std::memcmp(m, magic, sizeof(magic)) != 0)
-      throw GeometryError(where + ": not a distance-map file (bad header).");
+      throw GeometryError(where
+                          + ": not a distance-map file of this version (bad "
+                            "header).");
     if (expected != 0 && map.key != expected)
       throw GeometryError(where
                           + ": the file belongs to another mesh or "
@@ -386,14 +475,13 @@ namespace particulate::geometry {
     const auto header = in.tellg();
     in.seekg(0, std::ios::end);
     const auto end = in.tellg();
-    if (static_cast<std::size_t>(end - header)
-        != np * (sizeof(double) + 3 * sizeof(float)))
+    if (static_cast<std::size_t>(end - header) != np * 4 * sizeof(float))
       throw GeometryError(where
                           + ": the file is truncated or has extra bytes.");
     in.seekg(header);
     map.values.resize(np);
     map.normals.resize(3 * np);
-    in.read(reinterpret_cast<char *>(map.values.data()), np * sizeof(double));
+    in.read(reinterpret_cast<char *>(map.values.data()), np * sizeof(float));
     in.read(reinterpret_cast<char *>(map.normals.data()),
             3 * np * sizeof(float));
     if (!in)

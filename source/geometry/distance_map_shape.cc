@@ -18,6 +18,21 @@ namespace particulate::geometry {
     return dmap->distance(p, normal);
   }
 
+  void
+  DistanceMapShape::signed_distances(
+    const std::vector<Eigen::Vector3d> &points,
+    std::vector<double>                &distances,
+    std::vector<Eigen::Vector3d>       *normals) const
+  {
+    distances.resize(points.size());
+    if (normals)
+      normals->resize(points.size());
+    dmap->distances(points.data(),
+                    points.size(),
+                    distances.data(),
+                    normals ? normals->data() : nullptr);
+  }
+
   bool
   DistanceMapShape::contains(const Eigen::Vector3d &p) const
   {

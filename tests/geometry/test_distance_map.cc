@@ -1,14 +1,19 @@
 // Distance maps (thesis §3.4.2, Algorithm 5): second-order convergence of
 // the trilinear interpolation against exact distances of a sphere and a
-// torus, pose queries, the raw export layout and the disk cache.
+// torus, pose queries, batched queries, the raw export layout and the disk
+// cache.
 #include <particulate/geometry/distance_map.h>
+#include <particulate/geometry/distance_map_shape.h>
 #include <particulate/geometry/mesh_generators.h>
 #include <particulate/geometry/sphere.h>
 #include <particulate/geometry/torus.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <memory>
 #include <random>
 #include <sstream>
 
@@ -160,6 +165,48 @@ main()
           CHECK(std::abs(dw - de) < 1e-3);
       }
     CHECK(worst_d < 1e-12 && worst_n < 1e-12);
+  }
+
+  // The batched query gives the values of the one-point query (the same
+  // arithmetic), for a count that leaves a partial group, for points outside
+  // the grid box, and NaN (not a read outside the grid) for a NaN point.
+  {
+    std::mt19937                           rng(7);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    std::vector<Vector3d>                  pts(1001);
+    for (auto &p : pts)
+      p = Vector3d(u(rng), u(rng), u(rng));
+    const std::size_t nan_point = 17;
+    pts[nan_point][1]           = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double>   d(pts.size()), d_only(pts.size());
+    std::vector<Vector3d> nrm(pts.size());
+    map.distances(pts.data(), pts.size(), d.data(), nrm.data());
+    map.distances(pts.data(), pts.size(), d_only.data());
+    double worst_d = 0., worst_n = 0.;
+    int    outside = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (i != nan_point)
+        {
+          Vector3d     n1;
+          const double d1 = map.distance(pts[i], &n1);
+          worst_d         = std::max(
+            {worst_d, std::abs(d1 - d[i]), std::abs(d1 - d_only[i])});
+          worst_n = std::max(worst_n, (n1 - nrm[i]).norm());
+          outside += !map.covers(pts[i]);
+        }
+    CHECK_MSG(worst_d < 1e-14 && worst_n < 1e-14,
+              "batched distances and normals equal the one-point ones");
+    CHECK(outside > 100);
+    CHECK(std::isnan(d[nan_point]) && std::isnan(d_only[nan_point])
+          && std::isnan(map.distance(pts[nan_point])));
+    // DistanceMapShape answers a batch through the same path.
+    const DistanceMapShape shape(std::make_shared<const DistanceMap>(map));
+    std::vector<double>    d_shape;
+    shape.signed_distances(pts, d_shape);
+    bool same = d_shape.size() == pts.size();
+    for (std::size_t i = 0; same && i < pts.size(); ++i)
+      same = i == nan_point || std::abs(d_shape[i] - d[i]) < 1e-14;
+    CHECK(same);
   }
 
   // Outside the grid: clamp and add the distance to the box, which for a

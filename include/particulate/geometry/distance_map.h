@@ -26,6 +26,15 @@ namespace particulate::geometry {
    * All coordinates are in the body frame, the frame the shape was given in;
    * the overloads taking a Pose bring world points into it (b = R^T (x - t)).
    * A built map is immutable and safe to query from several threads.
+   *
+   * The grid values are stored in single precision: their rounding error
+   * (6e-8 of the largest distance in the map) is far below the interpolation
+   * error (about h^2 times the curvature) for any grid of fewer than a few
+   * thousand points per side, and the half-size grid stays in cache longer.
+   * Interpolation is done in double precision, so a query is a smooth
+   * function of the point. For many points, distances() is faster than one
+   * distance() call per point: it locates a group of points first and
+   * prefetches their cells, so that the memory accesses overlap.
    */
   class DistanceMap
   {
@@ -96,6 +105,21 @@ namespace particulate::geometry {
              const Pose            &pose,
              Eigen::Vector3d       *normal = nullptr) const;
 
+    /**
+     * Signed distances (and normals) of @p count body-frame points at once:
+     * the same values as distance() per point, at a lower cost per point.
+     * @param points body-frame points [m]
+     * @param count number of points
+     * @param distances receives @p count signed distances [m]
+     * @param normals if not null, receives @p count interpolated, normalised
+     *   outward normals (body frame)
+     */
+    void
+    distances(const Eigen::Vector3d *points,
+              std::size_t            count,
+              double                *distances,
+              Eigen::Vector3d       *normals = nullptr) const;
+
     /** True if @p p (body frame) lies inside the grid box. */
     bool
     covers(const Eigen::Vector3d &p) const;
@@ -141,7 +165,8 @@ namespace particulate::geometry {
                  * (j + static_cast<std::size_t>(n[1]) * k);
     }
 
-    /** Stored signed distance at grid point (i, j, k) [m]. */
+    /** Stored signed distance at grid point (i, j, k) [m] (single
+     *  precision). */
     double
     value(const int i, const int j, const int k) const
     {
@@ -167,23 +192,48 @@ namespace particulate::geometry {
     static DistanceMap
     load(const std::string &path);
 
-    /** Memory held by the grid values and normals [bytes]. */
+    /** Memory held by the grid values and normals [bytes]: 16 per grid
+     *  point. */
     std::size_t
     memory_bytes() const;
 
   private:
-    std::array<int, 3>  n  = {0, 0, 0};
-    Eigen::Vector3d     x0 = Eigen::Vector3d::Zero();
-    double              h  = 0.;
-    std::vector<double> values;
-    std::vector<float>  normals;   // 3 per grid point
-    std::uint64_t       key   = 0; // cache key, 0 if not from build_cached
-    Eigen::Vector3d     x1    = Eigen::Vector3d::Zero(); // last grid point
-    double              inv_h = 0.;
+    // A located query point: the grid index of its cell's lowest corner,
+    // its local coordinates in the cell (in [0, 1]) and, for points outside
+    // the grid box, the squared distance to the box in units of h.
+    struct CellPosition
+    {
+      std::size_t base;
+      double      f[3];
+      double      outside2;
+    };
 
-    // Derived members (x1, inv_h) after n, x0, h are set.
+    std::array<int, 3> n  = {0, 0, 0};
+    Eigen::Vector3d    x0 = Eigen::Vector3d::Zero();
+    double             h  = 0.;
+    std::vector<float> values;
+    std::vector<float> normals; // 3 per grid point
+    std::uint64_t      key = 0; // cache key, 0 if not from build_cached
+    // Derived from n and h by finish_setup(): 1 / h, the largest grid
+    // coordinate and the largest cell index per direction.
+    double                inv_h      = 0.;
+    std::array<double, 3> last_point = {0., 0., 0.};
+    std::array<int, 3>    last_cell  = {0, 0, 0};
+
     void
     finish_setup();
+
+    CellPosition
+    locate(const Eigen::Vector3d &p) const;
+
+    double
+    interpolate_distance(const CellPosition &c) const;
+
+    Eigen::Vector3d
+    interpolate_normal(const CellPosition &c) const;
+
+    void
+    check_not_empty(const char *caller) const;
 
     static DistanceMap
     load_checked(const std::string &path, const std::uint64_t expected_key);

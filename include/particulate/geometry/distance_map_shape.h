@@ -25,6 +25,14 @@ namespace particulate::geometry {
     signed_distance(const Eigen::Vector3d &p,
                     Eigen::Vector3d       *normal = nullptr) const override;
 
+    /** Many points at once through DistanceMap::distances(), which
+     *  overlaps their memory accesses. */
+    void
+    signed_distances(const std::vector<Eigen::Vector3d> &points,
+                     std::vector<double>                &distances,
+                     std::vector<Eigen::Vector3d>       *normals
+                     = nullptr) const override;
+
     /** Trilinear distance <= 0 inside the grid box; false outside it. */
     bool
     contains(const Eigen::Vector3d &p) const override;

@@ -2,7 +2,8 @@
 // queries, map build time against mesh size, and hash-grid point
 // containment on 33^3 / 65^3 / 129^3 vertex lattices against 1 and 100
 // bodies. Prints tables; asserts nothing about time.
-// Usage: bench_geometry [quick]   ("quick": smaller sizes, for smoke runs)
+// Usage: bench_geometry [quick|lookups]   ("quick": smaller sizes, for smoke
+// runs; "lookups": only the lookup table)
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/distance_map.h>
 #include <particulate/geometry/ellipsoid.h>
@@ -35,6 +36,23 @@ namespace {
   // Keeps results alive so the compiler cannot drop the timed loops.
   volatile double sink = 0.;
 
+  // Median of @p repeats timings of @p f [s]: one pass can be inflated by
+  // another process on the shared cores.
+  template <typename F>
+  double
+  median_seconds(const int repeats, F &&f)
+  {
+    std::vector<double> t(repeats);
+    for (double &x : t)
+      {
+        const auto t0 = Clock::now();
+        f();
+        x = seconds_since(t0);
+      }
+    std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
+    return t[repeats / 2];
+  }
+
   void
   lookups(const std::string &name, const TriangleMesh &mesh, const int n)
   {
@@ -49,22 +67,43 @@ namespace {
       p = box.lower
           + box.extent().cwiseProduct(Vector3d(u(rng), u(rng), u(rng)));
 
-    auto time_per_query = [&](auto &&f, int count) {
-      const auto t0  = Clock::now();
-      double     acc = 0.;
-      for (int i = 0; i < count; ++i)
-        acc += f(pts[i]);
-      sink = sink + acc;
-      return seconds_since(t0) / count * 1e9;
+    // ns per query, one call per point in the order of pts (first @p count).
+    auto time_per_query = [&](auto &&f, int count, int repeats) {
+      return median_seconds(repeats,
+                            [&] {
+                              double acc = 0.;
+                              for (int i = 0; i < count; ++i)
+                                acc += f(pts[i]);
+                              sink = sink + acc;
+                            })
+             / count * 1e9;
     };
-    // Warm up, then random order (cache-miss bound) ...
-    time_per_query([&](const Vector3d &p) { return map.distance(p); }, n);
-    const double t_map
-      = time_per_query([&](const Vector3d &p) { return map.distance(p); }, n);
-    Vector3d     nrm;
-    const double t_map_n = time_per_query(
-      [&](const Vector3d &p) { return map.distance(p, &nrm) + nrm[0]; },
-      n);
+    // ns per query, all of pts in one batched call.
+    std::vector<double>   out(n);
+    std::vector<Vector3d> nrm_out(n);
+    auto                  time_batch = [&](bool with_normals) {
+      return median_seconds(5,
+                            [&] {
+                              map.distances(pts.data(),
+                                            pts.size(),
+                                            out.data(),
+                                            with_normals ? nrm_out.data() :
+                                                                            nullptr);
+                              sink = sink + out[n / 2] + nrm_out[n / 3][0];
+                            })
+             / n * 1e9;
+    };
+    auto d   = [&](const Vector3d &p) { return map.distance(p); };
+    auto d_n = [&](const Vector3d &p) {
+      Vector3d nrm;
+      return map.distance(p, &nrm) + nrm[0];
+    };
+    // Random order (cache-miss bound for large grids); the first pass of each
+    // median is the warm-up ...
+    const double t_map     = time_per_query(d, n, 5);
+    const double t_map_n   = time_per_query(d_n, n, 5);
+    const double t_batch   = time_batch(false);
+    const double t_batch_n = time_batch(true);
     // ... and in a coherent order (sorted by grid cell, as mesh vertices
     // numbered cell by cell come).
     std::vector<Vector3d> sorted  = pts;
@@ -78,21 +117,26 @@ namespace {
                 return cell_of(a) < cell_of(b);
               });
     std::swap(pts, sorted);
-    const double t_sorted
-      = time_per_query([&](const Vector3d &p) { return map.distance(p); }, n);
+    const double t_sorted       = time_per_query(d, n, 5);
+    const double t_batch_sorted = time_batch(false);
     std::swap(pts, sorted);
+    // CGAL in random order: its cost does not depend on the order (each
+    // query descends the tree from the root).
     const int    m      = std::max(1000, n / 10);
     const double t_cgal = time_per_query(
       [&](const Vector3d &p) { return surface.unsigned_distance(p); },
-      m);
+      m,
+      3);
     const double t_signed = time_per_query(
       [&](const Vector3d &p) { return surface.signed_distance(p); },
-      m);
+      m,
+      3);
     const double t_side = time_per_query(
       [&](const Vector3d &p) { return double(surface.contains(p)); },
-      m);
+      m,
+      3);
     std::printf(
-      "| %-14s | %9zu | %3d x %3d x %3d | %8.1f | %8.1f | %8.1f | %9.0f | %9.0f | %9.0f | %7.0f | %7.0f |\n",
+      "| %-14s | %9zu | %3d x %3d x %3d | %6.1f | %6.1f | %6.1f | %6.1f | %6.1f | %6.1f | %9.0f | %9.0f | %9.0f | %5.0f | %5.0f | %5.0f | %5.0f |\n",
       name.c_str(),
       mesh.n_triangles(),
       map.n_points()[0],
@@ -100,12 +144,17 @@ namespace {
       map.n_points()[2],
       t_map,
       t_sorted,
+      t_batch,
+      t_batch_sorted,
       t_map_n,
+      t_batch_n,
       t_cgal,
       t_signed,
       t_side,
       t_cgal / t_map,
-      t_cgal / t_sorted);
+      t_cgal / t_sorted,
+      t_cgal / t_batch,
+      t_cgal / t_batch_sorted);
   }
 
   void
@@ -185,7 +234,8 @@ namespace {
 int
 main(int argc, char **argv)
 {
-  const bool        quick = argc > 1 && std::string(argv[1]) == "quick";
+  const std::string mode  = argc > 1 ? argv[1] : "";
+  const bool        quick = mode == "quick";
   const char       *env   = std::getenv("PARTICULATE_CGAL_DATA_DIR");
   const std::string dir = std::string(env ? env : "cgal-data") + "/data/meshes";
   std::vector<std::pair<std::string, TriangleMesh>> meshes;
@@ -198,13 +248,15 @@ main(int argc, char **argv)
 
   std::printf("\n## Distance-map lookup vs CGAL queries [ns per query]\n\n");
   std::printf(
-    "| mesh           | triangles | grid            | map d    | map d (sorted) | map d+n  | CGAL dist | CGAL sdist| CGAL side | ratio   | ratio (sorted) |\n");
+    "| mesh           | triangles | grid            | d      | d srt  | d bat  | d b srt| d+n    | d+n bat| CGAL dist | CGAL sdist| CGAL side | ratio | r srt | r bat | r b s |\n");
   std::printf(
-    "|----------------|-----------|-----------------|----------|----------|----------|-----------|-----------|-----------|---------|---------|\n");
+    "|----------------|-----------|-----------------|--------|--------|--------|--------|--------|--------|-----------|-----------|-----------|-------|-------|-------|-------|\n");
   const int n_queries = quick ? 20000 : 200000;
   lookups("icosphere L5", mesh_generators::icosphere(1., 5), n_queries);
   for (const auto &[name, mesh] : meshes)
     lookups(name, mesh, n_queries);
+  if (mode == "lookups")
+    return 0;
 
   std::printf(
     "\n## Distance-map build time vs mesh size (64 cells along the longest side, margin 4 cells, 1 thread)\n\n");
@@ -249,9 +301,12 @@ main(int argc, char **argv)
       containment(n, hundred, true);
     }
   std::printf(
-    "\nmap d / d+n: trilinear distance (and normal) lookup; CGAL dist: AABB-tree "
-    "closest point; sdist: + pseudo-normal sign; side: Side_of_triangle_mesh; "
-    "ratio = CGAL dist / map d; sorted: queries ordered by grid cell.\ntouched: fraction of vertices tested at least once; "
+    "\nd / d+n: map distance (and normal), one DistanceMap::distance call per "
+    "point; bat: one DistanceMap::distances call for all points; srt: "
+    "queries ordered by grid cell; CGAL dist: AABB-tree closest point; "
+    "sdist: + pseudo-normal sign; side: Side_of_triangle_mesh; ratio = CGAL "
+    "dist / map d (r srt, r bat, r b s: against d srt, d bat, d b srt); "
+    "medians of 5 map and 3 CGAL passes.\ntouched: fraction of vertices tested at least once; "
     "tests/NM: point-in-body tests over points x bodies.\n");
   return 0;
 }
