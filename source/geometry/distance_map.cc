@@ -25,31 +25,6 @@ namespace particulate::geometry {
     // when they are interpolated (16 points x 8 lines x 64 bytes = 8 kB).
     constexpr std::size_t batch = 16;
 
-    // The two values (or normals) of an edge along x: grid points (i, j, k)
-    // and (i + 1, j, k) are adjacent in memory, so the interpolation works on
-    // these pairs (two lanes of a SIMD register).
-    inline Eigen::Array2d
-    x_pair(const float *v)
-    {
-      return Eigen::Array2d(v[0], v[1]);
-    }
-
-    // Trilinear interpolation from the four x-edges of a cell, (y, z) =
-    // (0, 0), (1, 0), (0, 1), (1, 1): along z, then y, leaving the two ends
-    // of one x-edge.
-    template <typename Pair>
-    inline Pair
-    interpolate_yz(const Pair   &e00,
-                   const Pair   &e10,
-                   const Pair   &e01,
-                   const Pair   &e11,
-                   const double *f)
-    {
-      const Pair e0 = e00 + f[2] * (e01 - e00);
-      const Pair e1 = e10 + f[2] * (e11 - e10);
-      return e0 + f[1] * (e1 - e0);
-    }
-
     std::uint64_t
     mix(std::uint64_t h, const void *data, const std::size_t n)
     {
@@ -222,87 +197,15 @@ namespace particulate::geometry {
         last_point[d] = n[d] - 1;
         last_cell[d]  = n[d] - 2;
       }
+    stride_y = static_cast<std::size_t>(n[0]);
+    stride_z = stride_y * static_cast<std::size_t>(n[1]);
   }
 
   void
-  DistanceMap::check_not_empty(const char *caller) const
+  DistanceMap::throw_empty(const char *caller)
   {
-    if (values.empty())
-      throw GeometryError(std::string("DistanceMap::") + caller
-                          + ": the map is empty; build or load it first.");
-  }
-
-  inline DistanceMap::CellPosition
-  DistanceMap::locate(const Eigen::Vector3d &p) const
-  {
-    // O(1) cell location without branches: clamp the grid coordinate to the
-    // grid box (points outside get the value at the nearest box point plus
-    // their distance to the box). std::max(0., s) is 0 for s = NaN, so a
-    // NaN point reads a valid cell and returns NaN, never memory outside.
-    CellPosition c;
-    c.outside2 = 0.;
-    std::size_t i[3];
-    for (int d = 0; d < 3; ++d)
-      {
-        const double s       = (p[d] - x0[d]) * inv_h;
-        const double clamped = std::min(std::max(0., s), last_point[d]);
-        // clamped >= 0: truncation = floor; the last grid point belongs to
-        // the last cell.
-        const int cell = std::min(static_cast<int>(clamped), last_cell[d]);
-        i[d]           = static_cast<std::size_t>(cell);
-        c.f[d]         = clamped - cell;
-        c.outside2 += (s - clamped) * (s - clamped);
-      }
-    c.base = i[0] + static_cast<std::size_t>(n[0]) * (i[1] + n[1] * i[2]);
-    return c;
-  }
-
-  inline double
-  DistanceMap::interpolate_distance(const CellPosition &c) const
-  {
-    const std::size_t    sy = n[0], sz = sy * n[1];
-    const float         *v    = values.data() + c.base;
-    const Eigen::Array2d edge = interpolate_yz(x_pair(v),
-                                               x_pair(v + sy),
-                                               x_pair(v + sz),
-                                               x_pair(v + sy + sz),
-                                               c.f);
-    const double         d    = edge[0] + c.f[0] * (edge[1] - edge[0]);
-    // Outside the grid box (rare, so a predictable branch; NaN takes it).
-    return c.outside2 != 0. ? d + h * std::sqrt(c.outside2) : d;
-  }
-
-  inline Eigen::Vector3d
-  DistanceMap::interpolate_normal(const CellPosition &c) const
-  {
-    const std::size_t sy = 3 * std::size_t(n[0]), sz = sy * n[1];
-    const float      *g = normals.data() + 3 * c.base;
-    Eigen::Vector3d   m;
-    for (int d = 0; d < 3; ++d)
-      {
-        // Component d of the two normals of each x-edge: g[d] and g[d + 3].
-        auto pair = [&](const std::size_t offset) {
-          return Eigen::Array2d(g[offset + d], g[offset + d + 3]);
-        };
-        const Eigen::Array2d edge
-          = interpolate_yz(pair(0), pair(sy), pair(sz), pair(sy + sz), c.f);
-        m[d] = edge[0] + c.f[0] * (edge[1] - edge[0]);
-      }
-    const double len2 = m.squaredNorm();
-    // Zero only where the normals of the corners cancel (on a medial
-    // surface); any unit vector is as good as another there.
-    return len2 > 0. ? Eigen::Vector3d(m / std::sqrt(len2)) :
-                       Eigen::Vector3d::UnitX();
-  }
-
-  double
-  DistanceMap::distance(const Eigen::Vector3d &p, Eigen::Vector3d *normal) const
-  {
-    check_not_empty("distance");
-    const CellPosition c = locate(p);
-    if (normal)
-      *normal = interpolate_normal(c);
-    return interpolate_distance(c);
+    throw GeometryError(std::string("DistanceMap::") + caller
+                        + ": the map is empty; build or load it first.");
   }
 
   void
@@ -314,7 +217,7 @@ namespace particulate::geometry {
     if (count == 0)
       return;
     check_not_empty("distances");
-    const std::size_t sy = n[0], sz = sy * n[1];
+    const std::size_t sy = stride_y, sz = stride_z;
     CellPosition      cells[batch];
     for (std::size_t first = 0; first < count; first += batch)
       {

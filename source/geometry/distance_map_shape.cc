@@ -1,6 +1,8 @@
 #include <particulate/geometry/distance_map_shape.h>
 #include <particulate/geometry/geometry_error.h>
 
+#include <algorithm>
+
 namespace particulate::geometry {
 
   DistanceMapShape::DistanceMapShape(std::shared_ptr<const DistanceMap> map)
@@ -37,6 +39,24 @@ namespace particulate::geometry {
   DistanceMapShape::contains(const Eigen::Vector3d &p) const
   {
     return dmap->covers(p) && dmap->distance(p) <= 0.;
+  }
+
+  void
+  DistanceMapShape::contains_points(const Eigen::Vector3d *points,
+                                    const std::size_t      count,
+                                    bool                  *inside) const
+  {
+    // Groups small enough that their distances stay in the L1 cache.
+    constexpr std::size_t group = 256;
+    double                d[group];
+    const BoundingBox     box = dmap->grid_box(); // covers() per point
+    for (std::size_t first = 0; first < count; first += group)
+      {
+        const std::size_t m = std::min(group, count - first);
+        dmap->distances(points + first, m, d);
+        for (std::size_t q = 0; q < m; ++q)
+          inside[first + q] = box.contains(points[first + q]) && d[q] <= 0.;
+      }
   }
 
   BoundingBox

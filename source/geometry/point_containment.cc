@@ -1,6 +1,7 @@
 #include <particulate/geometry/geometry_error.h>
 #include <particulate/geometry/point_containment.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -48,9 +49,38 @@ namespace particulate::geometry {
       distances->assign(pts.size(), std::numeric_limits<double>::infinity());
     std::vector<char> touched(statistics ? pts.size() : 0, 0);
     std::size_t       tests = 0;
+    // A body's candidate points (those in its box) are answered in groups by
+    // the shape's batched queries, Shape::contains_points and
+    // Shape::signed_distances, so that shapes with a faster batched query
+    // (distance maps) get it. Small groups keep the buffers in the L1 cache.
+    constexpr std::size_t        group = 256;
+    std::vector<std::size_t>     test_ids, distance_ids;
+    std::vector<Eigen::Vector3d> test_points, distance_points;
+    std::vector<double>          body_distances;
+    bool                         test_inside[group];
+    test_ids.reserve(group);
+    test_points.reserve(group);
     for (std::size_t b = 0; b < bodies.size(); ++b)
       {
         const PlacedShape &body = bodies[b];
+        auto               test = [&] {
+          body.shape->contains_points(test_points.data(),
+                                      test_points.size(),
+                                      test_inside);
+          for (std::size_t q = 0; q < test_ids.size(); ++q)
+            if (test_inside[q])
+              inside[test_ids[q]] = static_cast<int>(b);
+          test_ids.clear();
+          test_points.clear();
+        };
+        auto measure = [&] {
+          body.shape->signed_distances(distance_points, body_distances);
+          for (std::size_t q = 0; q < distance_ids.size(); ++q)
+            (*distances)[distance_ids[q]]
+              = std::min((*distances)[distance_ids[q]], body_distances[q]);
+          distance_ids.clear();
+          distance_points.clear();
+        };
         grid.for_each_in_box(world_bounding_box(body), [&](std::size_t i) {
           ++tests;
           if (statistics)
@@ -58,14 +88,27 @@ namespace particulate::geometry {
           const Eigen::Vector3d p = body.pose.to_body(pts[i]);
           if (distances)
             {
-              const double d  = body.shape->signed_distance(p);
-              (*distances)[i] = std::min((*distances)[i], d);
+              distance_ids.push_back(i);
+              distance_points.push_back(p);
+              if (distance_ids.size() == group)
+                measure();
             }
           // The first body wins, as in the brute-force loop; a point already
-          // inside an earlier body needs no further inside test.
-          if (inside[i] < 0 && body.shape->contains(p))
-            inside[i] = static_cast<int>(b);
+          // inside an earlier body needs no further inside test (each point
+          // is a candidate of a body at most once, so this body's own
+          // answers cannot change the condition).
+          if (inside[i] < 0)
+            {
+              test_ids.push_back(i);
+              test_points.push_back(p);
+              if (test_ids.size() == group)
+                test();
+            }
         });
+        if (!distance_ids.empty())
+          measure();
+        if (!test_ids.empty())
+          test();
       }
     if (statistics)
       {

@@ -9,6 +9,15 @@ namespace particulate::geometry {
   }
 
   void
+  Shape::contains_points(const Eigen::Vector3d *points,
+                         const std::size_t      count,
+                         bool                  *inside) const
+  {
+    for (std::size_t i = 0; i < count; ++i)
+      inside[i] = contains(points[i]);
+  }
+
+  void
   Shape::signed_distances(const std::vector<Eigen::Vector3d> &points,
                           std::vector<double>                &distances,
                           std::vector<Eigen::Vector3d>       *normals) const

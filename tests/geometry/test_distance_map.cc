@@ -207,6 +207,18 @@ main()
     for (std::size_t i = 0; same && i < pts.size(); ++i)
       same = i == nan_point || std::abs(d_shape[i] - d[i]) < 1e-14;
     CHECK(same);
+    // ... and its batched inside test equals contains() per point (inside,
+    // outside the grid box, NaN), for a count above the internal group size.
+    std::unique_ptr<bool[]> in(new bool[pts.size()]);
+    shape.contains_points(pts.data(), pts.size(), in.get());
+    int n_in = 0, n_differ = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      {
+        n_in += in[i];
+        n_differ += in[i] != shape.contains(pts[i]);
+      }
+    CHECK_MSG(n_differ == 0 && n_in > 10 && !in[nan_point],
+              "batched inside test equals contains() per point");
   }
 
   // Outside the grid: clamp and add the distance to the box, which for a

@@ -9,7 +9,15 @@
 
 #include <Eigen/Core>
 
+#if defined(__SSE2__)
+#  include <emmintrin.h>
+#endif
+
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -215,13 +223,26 @@ namespace particulate::geometry {
     std::vector<float> normals; // 3 per grid point
     std::uint64_t      key = 0; // cache key, 0 if not from build_cached
     // Derived from n and h by finish_setup(): 1 / h, the largest grid
-    // coordinate and the largest cell index per direction.
+    // coordinate and the largest cell index per direction (as doubles), and
+    // the index steps from a grid point to its neighbours in y (n[0]) and z
+    // (n[0] n[1]).
     double                inv_h      = 0.;
     std::array<double, 3> last_point = {0., 0., 0.};
-    std::array<int, 3>    last_cell  = {0, 0, 0};
+    std::array<double, 3> last_cell  = {0., 0., 0.};
+    std::size_t           stride_y   = 0;
+    std::size_t           stride_z   = 0;
 
     void
     finish_setup();
+
+    // The hot path of a query, defined below so that it is inlined into the
+    // callers' loops (a call and its set-up cost about as much as the
+    // lookup of a cached cell).
+    void
+    check_not_empty(const char *caller) const;
+
+    [[noreturn]] static void
+    throw_empty(const char *caller);
 
     CellPosition
     locate(const Eigen::Vector3d &p) const;
@@ -232,12 +253,161 @@ namespace particulate::geometry {
     Eigen::Vector3d
     interpolate_normal(const CellPosition &c) const;
 
-    void
-    check_not_empty(const char *caller) const;
+    // The two values (or normals) of an edge along x: grid points (i, j, k)
+    // and (i + 1, j, k) are adjacent in memory, so the interpolation works on
+    // these pairs (two lanes of a SIMD register).
+    static Eigen::Array2d
+    x_pair(const float *v)
+    {
+      return Eigen::Array2d(v[0], v[1]);
+    }
+
+    // Trilinear interpolation from the four x-edges of a cell, (y, z) =
+    // (0, 0), (1, 0), (0, 1), (1, 1): along z, then y, leaving the two ends
+    // of one x-edge.
+    static Eigen::Array2d
+    interpolate_yz(const Eigen::Array2d &e00,
+                   const Eigen::Array2d &e10,
+                   const Eigen::Array2d &e01,
+                   const Eigen::Array2d &e11,
+                   const double         *f)
+    {
+      const Eigen::Array2d e0 = e00 + f[2] * (e01 - e00);
+      const Eigen::Array2d e1 = e10 + f[2] * (e11 - e10);
+      return e0 + f[1] * (e1 - e0);
+    }
 
     static DistanceMap
     load_checked(const std::string &path, const std::uint64_t expected_key);
   };
+
+  // ---------------------------------------------------------------------------
+
+  inline void
+  DistanceMap::check_not_empty(const char *caller) const
+  {
+    if (__builtin_expect(values.empty(), 0))
+      throw_empty(caller);
+  }
+
+  inline DistanceMap::CellPosition
+  DistanceMap::locate(const Eigen::Vector3d &p) const
+  {
+    // O(1) cell location: clamp the grid coordinate s to the grid box
+    // (points outside get the value at the nearest box point plus their
+    // distance to the box, computed only for them). std::max(0., s) is 0 for
+    // s = NaN, so a NaN point reads a valid cell and returns NaN, never
+    // memory outside. The cell index is the truncation of
+    // min(clamped, last cell), which equals min(floor(clamped), last cell)
+    // for clamped >= 0: the last grid point belongs to the last cell.
+    CellPosition c;
+    double       s[3], clamped[3];
+    bool         outside;
+#if defined(__SSE2__)
+    // The same operations as the loop below (so the same results, bit for
+    // bit), x and y in the two lanes of one register and z in a third, which
+    // halves the instructions of the hot path: maxpd(s, 0) and minpd(s, l)
+    // are std::max(0., s) and std::min(s, l), also for NaN and -0.
+    const __m128d s_xy
+      = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(p.data()), _mm_loadu_pd(x0.data())),
+                   _mm_set1_pd(inv_h));
+    const __m128d s_z  = _mm_mul_sd(_mm_sub_sd(_mm_load_sd(p.data() + 2),
+                                              _mm_load_sd(x0.data() + 2)),
+                                   _mm_set_sd(inv_h));
+    const __m128d c_xy = _mm_min_pd(_mm_max_pd(s_xy, _mm_setzero_pd()),
+                                    _mm_loadu_pd(last_point.data()));
+    const __m128d c_z  = _mm_min_sd(_mm_max_sd(s_z, _mm_setzero_pd()),
+                                   _mm_load_sd(last_point.data() + 2));
+    const __m128i i_xy
+      = _mm_cvttpd_epi32(_mm_min_pd(c_xy, _mm_loadu_pd(last_cell.data())));
+    const int i_z
+      = _mm_cvttsd_si32(_mm_min_sd(c_z, _mm_load_sd(last_cell.data() + 2)));
+    _mm_storeu_pd(c.f, _mm_sub_pd(c_xy, _mm_cvtepi32_pd(i_xy)));
+    c.f[2] = _mm_cvtsd_f64(c_z) - i_z;
+    // s != clamped in any direction (true for NaN): outside the grid box.
+    // (The upper lane of the z comparison is s_z's, 0.)
+    outside = _mm_movemask_pd(
+                _mm_or_pd(_mm_cmpneq_pd(s_xy, c_xy), _mm_cmpneq_sd(s_z, c_z)))
+              != 0;
+    c.base = static_cast<std::size_t>(_mm_cvtsi128_si32(i_xy))
+             + stride_y
+                 * static_cast<std::size_t>(
+                   _mm_cvtsi128_si32(_mm_srli_si128(i_xy, 4)))
+             + stride_z * static_cast<std::size_t>(i_z);
+    if (outside)
+      {
+        _mm_storeu_pd(s, s_xy);
+        _mm_storeu_pd(clamped, c_xy);
+        s[2]       = _mm_cvtsd_f64(s_z);
+        clamped[2] = _mm_cvtsd_f64(c_z);
+      }
+#else
+    std::int64_t i[3];
+    outside = false;
+    for (int d = 0; d < 3; ++d)
+      {
+        s[d]       = (p[d] - x0[d]) * inv_h;
+        clamped[d] = std::min(std::max(0., s[d]), last_point[d]);
+        outside |= s[d] != clamped[d]; // true for NaN
+        const double cell = std::min(clamped[d], last_cell[d]);
+        i[d]              = static_cast<std::int64_t>(cell);
+        c.f[d]            = clamped[d] - static_cast<double>(i[d]);
+      }
+    c.base = static_cast<std::size_t>(i[0]) + stride_y * i[1] + stride_z * i[2];
+#endif
+    c.outside2 = 0.;
+    if (outside)
+      for (int d = 0; d < 3; ++d)
+        c.outside2 += (s[d] - clamped[d]) * (s[d] - clamped[d]);
+    return c;
+  }
+
+  inline double
+  DistanceMap::interpolate_distance(const CellPosition &c) const
+  {
+    const float         *v    = values.data() + c.base;
+    const Eigen::Array2d edge = interpolate_yz(x_pair(v),
+                                               x_pair(v + stride_y),
+                                               x_pair(v + stride_z),
+                                               x_pair(v + stride_y + stride_z),
+                                               c.f);
+    const double         d    = edge[0] + c.f[0] * (edge[1] - edge[0]);
+    // Outside the grid box (rare, so a predictable branch; NaN takes it).
+    return c.outside2 != 0. ? d + h * std::sqrt(c.outside2) : d;
+  }
+
+  inline Eigen::Vector3d
+  DistanceMap::interpolate_normal(const CellPosition &c) const
+  {
+    const std::size_t sy = 3 * stride_y, sz = 3 * stride_z;
+    const float      *g = normals.data() + 3 * c.base;
+    Eigen::Vector3d   m;
+    for (int d = 0; d < 3; ++d)
+      {
+        // Component d of the two normals of each x-edge: g[d] and g[d + 3].
+        auto pair = [&](const std::size_t offset) {
+          return Eigen::Array2d(g[offset + d], g[offset + d + 3]);
+        };
+        const Eigen::Array2d edge
+          = interpolate_yz(pair(0), pair(sy), pair(sz), pair(sy + sz), c.f);
+        m[d] = edge[0] + c.f[0] * (edge[1] - edge[0]);
+      }
+    const double len2 = m.squaredNorm();
+    // Zero only where the normals of the corners cancel (on a medial
+    // surface); any unit vector is as good as another there.
+    return len2 > 0. ? Eigen::Vector3d(m / std::sqrt(len2)) :
+                       Eigen::Vector3d::UnitX();
+  }
+
+  inline double
+  DistanceMap::distance(const Eigen::Vector3d &p, Eigen::Vector3d *normal) const
+  {
+    check_not_empty("distance");
+    const CellPosition c = locate(p);
+    if (normal)
+      *normal = interpolate_normal(c);
+    return interpolate_distance(c);
+  }
 
 } // namespace particulate::geometry
 

@@ -37,6 +37,13 @@ namespace particulate::geometry {
     bool
     contains(const Eigen::Vector3d &p) const override;
 
+    /** The same answers as contains() per point, the distances in groups
+     *  through DistanceMap::distances(). */
+    void
+    contains_points(const Eigen::Vector3d *points,
+                    std::size_t            count,
+                    bool                  *inside) const override;
+
     /** The map's grid box. */
     BoundingBox
     bounding_box() const override;

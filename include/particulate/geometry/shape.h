@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <vector>
 
 namespace particulate::geometry {
@@ -59,6 +60,22 @@ namespace particulate::geometry {
      */
     virtual bool
     contains(const Eigen::Vector3d &p) const;
+
+    /**
+     * The inside test of many points at once: @p inside[i] =
+     * contains(@p points[i]), exactly. The default calls contains() per
+     * point; shapes with a faster batched query override it (a
+     * DistanceMapShape answers through DistanceMap::distances(), which
+     * overlaps the memory accesses of the points). The point containment
+     * (classify_points) hands each body its candidate points this way.
+     * @param points body-frame points [m]
+     * @param count number of points
+     * @param inside receives @p count answers
+     */
+    virtual void
+    contains_points(const Eigen::Vector3d *points,
+                    std::size_t            count,
+                    bool                  *inside) const;
 
     /** A box containing the solid, in the body frame [m]. Infinite for
      *  unbounded shapes (the half-space). */
