@@ -74,6 +74,8 @@ namespace particulate::rigid {
   World::add_material(const Material &m)
   {
     m.check();
+    if (sphere_dem_) // it holds the pair materials
+      hand_back_sphere_dem();
     materials_.push_back(m);
     const unsigned int n = materials_.size();
     pair_materials_.assign(n * n, ContactMaterial());
@@ -111,13 +113,28 @@ namespace particulate::rigid {
       throw std::invalid_argument(
         "rigid::World::add_body(): position and orientation must be finite "
         "(and the quaternion non-zero).");
+    if (sphere_dem_) // it holds the bodies and the lengths set below
+      hand_back_sphere_dem();
     bodies_.emplace_back(std::move(shape),
                          material,
                          materials_[material].density,
                          fixed);
-    RigidBody &b   = bodies_.back();
-    b.position     = position;
-    b.orientation  = orientation.normalized();
+    RigidBody &b  = bodies_.back();
+    b.position    = position;
+    b.orientation = orientation.normalized();
+    if (!SphereDem::can_handle(b))
+      ++n_general_only_;
+    if (!b.is_fixed())
+      {
+        // Smallest effective mass at a contact (for the DEM substeps): half
+        // the mass (two equal bodies), or the rotational I_min / R^2 for
+        // off-centre contacts.
+        const double R = b.bounding_radius();
+        smallest_contact_mass_
+          = std::min({smallest_contact_mass_,
+                      0.5 * b.mass(),
+                      b.principal_inertia().minCoeff() / (R * R)});
+      }
     const double r = b.bounding_radius();
     if (std::isfinite(r))
       min_radius_ = min_radius_ > 0. ? std::min(min_radius_, r) : r;
@@ -176,17 +193,7 @@ namespace particulate::rigid {
       {
         // Shortest binary contact time over all material pairs, with the
         // lightest dynamic body as the reduced mass (conservative).
-        double m_min = std::numeric_limits<double>::infinity();
-        // Smallest effective mass at a contact: half the mass (two equal
-        // bodies), or the rotational I_min / R^2 for off-centre contacts.
-        for (const RigidBody &b : bodies_)
-          if (!b.is_fixed())
-            {
-              const double R = b.bounding_radius();
-              m_min          = std::min({m_min,
-                                         0.5 * b.mass(),
-                                         b.principal_inertia().minCoeff() / (R * R)});
-            }
+        const double m_min = smallest_contact_mass_;
         if (std::isfinite(m_min))
           {
             double kmax = 0.;
@@ -200,6 +207,49 @@ namespace particulate::rigid {
           }
       }
     return n;
+  }
+
+
+
+  bool
+  World::sphere_fast_path_applies() const
+  {
+    if (parameters_.contact_solver != ContactSolverType::dem
+        || !parameters_.sphere_fast_path || n_general_only_ > 0)
+      return false;
+    // rotation locks may be set at any time
+    return std::none_of(bodies_.begin(), bodies_.end(), [](const RigidBody &b) {
+      return b.rotation_locked();
+    });
+  }
+
+
+
+  void
+  World::hand_back_sphere_dem()
+  {
+    sphere_dem_->export_state(bodies_,
+                              graph_.edges(),
+                              dropped_,
+                              broad_positions_);
+    sphere_dem_.reset();
+  }
+
+
+
+  const ContactGraph &
+  World::contact_graph() const
+  {
+    if (!sphere_dem_)
+      return graph_;
+    std::vector<ContactEdge>     dropped;
+    std::vector<Eigen::Vector3d> positions;
+    graph_snapshot_ = ContactGraph();
+    sphere_dem_->export_state(bodies_,
+                              graph_snapshot_.edges(),
+                              dropped,
+                              positions);
+    return graph_snapshot_;
   }
 
 
@@ -348,22 +398,73 @@ namespace particulate::rigid {
         + std::to_string(dt) + ".");
     const unsigned int n_sub = substeps_for(dt);
     const double       h     = dt / n_sub;
-    const bool dem  = parameters_.contact_solver == ContactSolverType::dem;
-    stats_          = StepStatistics();
-    stats_.substeps = n_sub;
+    stats_                   = StepStatistics();
+    stats_.substeps          = n_sub;
+    const bool fast          = sphere_fast_path_applies();
+    if (sphere_dem_ && !fast)
+      hand_back_sphere_dem();
 
-    // Applied loads: accumulators plus buoyancy, constant over the step.
-    applied_force_.resize(bodies_.size());
-    applied_torque_.resize(bodies_.size());
-    for (unsigned int i = 0; i < bodies_.size(); ++i)
+    if (fast) // reads and clears the accumulators in its own passes
+      step_sphere_dem(n_sub, h);
+    else
       {
-        const RigidBody &b = bodies_[i];
-        applied_force_[i]  = b.force;
-        applied_torque_[i] = b.torque;
-        if (parameters_.fluid_density > 0. && !b.is_fixed())
-          applied_force_[i]
-            -= parameters_.fluid_density * b.volume() * parameters_.gravity;
+        // Applied loads: accumulators plus buoyancy, constant over the step.
+        applied_force_.resize(bodies_.size());
+        applied_torque_.resize(bodies_.size());
+        for (unsigned int i = 0; i < bodies_.size(); ++i)
+          {
+            const RigidBody &b = bodies_[i];
+            applied_force_[i]  = b.force;
+            applied_torque_[i] = b.torque;
+            if (parameters_.fluid_density > 0. && !b.is_fixed())
+              applied_force_[i]
+                -= parameters_.fluid_density * b.volume() * parameters_.gravity;
+          }
+        step_general(n_sub, h);
+        for (RigidBody &b : bodies_)
+          b.clear_accumulators();
       }
+
+    // Contact forces are assembled on demand (contact_forces()).
+    forces_valid_ = false;
+    last_dt_      = dt;
+    time_ += dt;
+    ++step_number_;
+  }
+
+
+
+  void
+  World::step_sphere_dem(const unsigned int n_sub, const double h)
+  {
+    if (!sphere_dem_)
+      {
+        SphereDem::Settings settings;
+        settings.margin        = margin_;
+        settings.offset        = parameters_.contact_offset;
+        settings.skin          = skin_;
+        settings.gravity       = parameters_.gravity;
+        settings.fluid_density = parameters_.fluid_density;
+        sphere_dem_            = std::make_unique<SphereDem>(bodies_,
+                                                  pair_materials_,
+                                                  materials_.size(),
+                                                  settings,
+                                                  graph_.edges(),
+                                                  broad_positions_);
+        // the sphere path holds the contact state from here on
+        graph_ = ContactGraph();
+        dropped_.clear();
+        broad_positions_.clear();
+      }
+    sphere_dem_->step(bodies_, n_sub, h, stats_);
+  }
+
+
+
+  void
+  World::step_general(const unsigned int n_sub, const double h)
+  {
+    const bool dem = parameters_.contact_solver == ContactSolverType::dem;
     for (ContactEdge &e : graph_.edges())
       {
         e.step_impulse.setZero();
@@ -419,18 +520,9 @@ namespace particulate::rigid {
           NewtonEulerIntegrator::integrate_position(b, h);
         stats_.time_integrate += seconds_since(t0);
       }
-
-    // Contact forces are assembled on demand (contact_forces()).
-    forces_valid_ = false;
-    last_dt_      = dt;
-
     stats_.pairs = graph_.edges().size();
     for (const ContactEdge &e : graph_.edges())
       stats_.contacts += e.manifold.points.size();
-    for (RigidBody &b : bodies_)
-      b.clear_accumulators();
-    time_ += dt;
-    ++step_number_;
   }
 
 
@@ -454,10 +546,15 @@ namespace particulate::rigid {
       contact_forces_.push_back({e.manifold.b, e.manifold.a, p, F});
       contact_forces_.push_back({e.manifold.a, e.manifold.b, p, -F});
     };
-    for (const ContactEdge &e : graph_.edges())
-      add(e);
-    for (const ContactEdge &e : dropped_)
-      add(e);
+    if (sphere_dem_)
+      sphere_dem_->append_contact_forces(last_dt_, contact_forces_);
+    else
+      {
+        for (const ContactEdge &e : graph_.edges())
+          add(e);
+        for (const ContactEdge &e : dropped_)
+          add(e);
+      }
     std::stable_sort(contact_forces_.begin(),
                      contact_forces_.end(),
                      [](const ContactForce &x, const ContactForce &y) {
@@ -512,6 +609,8 @@ namespace particulate::rigid {
   double
   World::max_penetration() const
   {
+    if (sphere_dem_)
+      return sphere_dem_->max_penetration();
     double p = 0.;
     for (const ContactEdge &e : graph_.edges())
       for (const ContactPoint &c : e.manifold.points)

@@ -94,12 +94,22 @@ namespace particulate::rigid {
             }
         }
     };
-    write_edges(graph_.edges());
+    // The sphere-only DEM path writes its state as the general path's:
+    // either path can continue from the file.
+    std::vector<ContactEdge>     fast_edges, fast_dropped;
+    std::vector<Eigen::Vector3d> fast_positions;
+    if (sphere_dem_)
+      sphere_dem_->export_state(bodies_,
+                                fast_edges,
+                                fast_dropped,
+                                fast_positions);
+    write_edges(sphere_dem_ ? fast_edges : graph_.edges());
     // edges the last broad phase dropped still carry that step's forces
-    write_edges(dropped_);
+    write_edges(sphere_dem_ ? fast_dropped : dropped_);
     // where the DEM's Verlet list was built (empty: rebuild next step)
-    put<std::uint64_t>(out, broad_positions_.size());
-    for (const Eigen::Vector3d &x : broad_positions_)
+    const auto &list = sphere_dem_ ? fast_positions : broad_positions_;
+    put<std::uint64_t>(out, list.size());
+    for (const Eigen::Vector3d &x : list)
       put_vector(out, x);
   }
 
@@ -158,6 +168,9 @@ namespace particulate::rigid {
             }
         }
     };
+    // the next step hands the state to the sphere-only path again if it
+    // applies, rebuilding its list where it was built
+    sphere_dem_.reset();
     read_edges(graph_.edges());
     read_edges(dropped_);
     broad_positions_.resize(get<std::uint64_t>(in));

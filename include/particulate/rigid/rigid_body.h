@@ -176,6 +176,12 @@ namespace particulate::rigid {
      * about these axes are set to zero. */
     void
     lock_rotation(const std::array<bool, 3> &axes);
+    /** Whether rotation about some world axis is locked. */
+    bool
+    rotation_locked() const
+    {
+      return rotation_locked_[0] || rotation_locked_[1] || rotation_locked_[2];
+    }
 
     /** World point of the body-frame point @p p_body. */
     Eigen::Vector3d

@@ -7,9 +7,11 @@
 #include <particulate/rigid/hierarchical_hash_grid.h>
 #include <particulate/rigid/material.h>
 #include <particulate/rigid/rigid_body.h>
+#include <particulate/rigid/sphere_dem.h>
 
 #include <cstdint>
 #include <iosfwd>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -48,6 +50,10 @@ namespace particulate::rigid {
      * phase reruns only when some body has moved more than half of it. 0
      * selects 20 % of the smallest bounding radius. */
     double broad_phase_skin = 0.;
+    /** DEM only: step worlds of spheres and half-space walls with the
+     * sphere-only path (SphereDem: same physics, several times faster).
+     * false keeps the general path (for comparisons and tests). */
+    bool sphere_fast_path = true;
 
     /** Throws std::invalid_argument naming the bad entry. */
     void
@@ -194,11 +200,16 @@ namespace particulate::rigid {
     void
     load_state(std::istream &in);
 
-    /** The contact graph (edges, contact points, groups). */
+    /** The contact graph (edges, contact points, groups). While the DEM
+     * runs on the sphere-only path this is a snapshot made on request:
+     * edges and contact points, no groups. */
     const ContactGraph &
-    contact_graph() const
+    contact_graph() const;
+    /** Whether the last step ran on the sphere-only DEM path. */
+    bool
+    uses_sphere_fast_path() const
     {
-      return graph_;
+      return sphere_dem_ != nullptr;
     }
     /** Statistics of the last step. */
     const StepStatistics &
@@ -222,13 +233,28 @@ namespace particulate::rigid {
     narrow_phase(double h);
     unsigned int
     substeps_for(double dt) const;
+    bool
+    sphere_fast_path_applies() const;
+    void
+    hand_back_sphere_dem();
+    void
+    step_sphere_dem(unsigned int n_sub, double h);
+    void
+    step_general(unsigned int n_sub, double h);
 
-    WorldParameters                parameters_;
-    std::vector<RigidBody>         bodies_;
-    std::vector<Material>          materials_;
-    std::vector<ContactMaterial>   pair_materials_;
-    HierarchicalHashGrid           grid_;
-    ContactGraph                   graph_;
+    WorldParameters              parameters_;
+    std::vector<RigidBody>       bodies_;
+    std::vector<Material>        materials_;
+    std::vector<ContactMaterial> pair_materials_;
+    HierarchicalHashGrid         grid_;
+    ContactGraph                 graph_;
+    /** The sphere-only DEM path while it holds the contact state. */
+    std::unique_ptr<SphereDem> sphere_dem_;
+    /** Bodies that the sphere-only path cannot take (by shape). */
+    unsigned int n_general_only_ = 0;
+    /** Smallest effective contact mass of a dynamic body in kg (DEM). */
+    double smallest_contact_mass_ = std::numeric_limits<double>::infinity();
+    mutable ContactGraph           graph_snapshot_;
     std::unique_ptr<ContactSolver> solver_;
     std::vector<BroadPhaseProxy>   proxies_;
     std::vector<BodyPair>          pairs_;

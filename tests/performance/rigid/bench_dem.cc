@@ -4,8 +4,10 @@
 // packed bed), radius 1 mm, in a box of five walls, under gravity, with
 // small random velocities, stepped with the DEM solver for a fixed number
 // of substeps. Prints ns of thread CPU time per particle-substep, split
-// over the stages.
-// Usage: bench_rigid_dem [n] [steps]
+// over the stages. By default the World takes its sphere-only DEM path
+// (SphereDem); `general` forces the general path (contact graph, DemSolver)
+// for comparison.
+// Usage: bench_rigid_dem [n] [steps] [fast|general]
 #include <particulate/rigid/scene.h>
 
 #include <cmath>
@@ -13,18 +15,21 @@
 #include <cstdlib>
 #include <ctime>
 #include <random>
+#include <string>
 
 using namespace particulate::rigid;
 
 int
 main(int argc, char **argv)
 {
-  const unsigned int n     = argc > 1 ? std::atoi(argv[1]) : 100000;
-  const unsigned int steps = argc > 2 ? std::atoi(argv[2]) : 20;
+  const unsigned int n       = argc > 1 ? std::atoi(argv[1]) : 100000;
+  const unsigned int steps   = argc > 2 ? std::atoi(argv[2]) : 20;
+  const bool         general = argc > 3 && std::string(argv[3]) == "general";
   SceneDescription   scene;
   scene.world.contact_solver        = ContactSolverType::dem;
   scene.world.substeps              = 1;
   scene.world.dem_steps_per_contact = 20.;
+  scene.world.sphere_fast_path      = !general;
   auto &m                           = scene.materials[0];
   m.density                         = 2500.;
   m.restitution                     = 0.5;
@@ -97,9 +102,10 @@ main(int argc, char **argv)
   ts *= scale;
   ti *= scale;
   std::printf(
-    "| spheres | substeps | contacts | total ns/particle-step | broad | narrow+graph | "
-    "solve | integrate |\n|---|---|---|---|---|---|---|---|\n");
-  std::printf("| %u | %lu | %u | %.0f | %.0f | %.0f | %.0f | %.0f |\n",
+    "| path | spheres | substeps | contacts | total ns/particle-step | broad | narrow+graph | "
+    "solve | integrate |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| %s | %u | %lu | %u | %.0f | %.0f | %.0f | %.0f | %.0f |\n",
+              w.uses_sphere_fast_path() ? "spheres only" : "general",
               n,
               substeps,
               w.statistics().contacts,

@@ -1,0 +1,724 @@
+#include <particulate/rigid/half_space.h>
+#include <particulate/rigid/sphere_dem.h>
+#include <particulate/rigid/sphere_neighbour_search.h>
+#include <particulate/rigid/world.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace particulate::rigid {
+  namespace {
+    using Clock = std::chrono::steady_clock;
+    double
+    seconds_since(const Clock::time_point &t0)
+    {
+      return std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+
+    /** History key of the pair of bodies a < b. */
+    std::uint64_t
+    pair_key(const BodyId a, const BodyId b)
+    {
+      return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+    }
+
+    /**
+     * A 3-vector as three scalars, for the force loops: their arithmetic
+     * then stays in registers, where Eigen's fixed 3-vectors go through
+     * 2-wide packets and stack temporaries whose partial stores stall the
+     * wide reloads (measured: a third of the loop).
+     */
+    struct V3
+    {
+      double x, y, z;
+    };
+    inline V3
+    operator+(const V3 &a, const V3 &b)
+    {
+      return {a.x + b.x, a.y + b.y, a.z + b.z};
+    }
+    inline V3
+    operator-(const V3 &a, const V3 &b)
+    {
+      return {a.x - b.x, a.y - b.y, a.z - b.z};
+    }
+    inline V3
+    operator*(const double s, const V3 &a)
+    {
+      return {s * a.x, s * a.y, s * a.z};
+    }
+    inline double
+    dot(const V3 &a, const V3 &b)
+    {
+      return a.x * b.x + a.y * b.y + a.z * b.z;
+    }
+    inline V3
+    cross(const V3 &a, const V3 &b)
+    {
+      return {a.y * b.z - a.z * b.y,
+              a.z * b.x - a.x * b.z,
+              a.x * b.y - a.y * b.x};
+    }
+    inline V3
+    load(const Eigen::Vector3d &v)
+    {
+      return {v[0], v[1], v[2]};
+    }
+    inline void
+    store(Eigen::Vector3d &v, const V3 &a)
+    {
+      v[0] = a.x;
+      v[1] = a.y;
+      v[2] = a.z;
+    }
+    inline void
+    add_to(Eigen::Vector3d &v, const V3 &a)
+    {
+      v[0] += a.x;
+      v[1] += a.y;
+      v[2] += a.z;
+    }
+
+    /**
+     * DemSolver's contact law at one overlapping point: returns the normal
+     * force f_n and sets the tangential force @p ft on the second body
+     * (the force is f_n n + ft), advancing the tangential @p spring. The
+     * same formulas in the same order, except that the Coulomb tests
+     * compare squares, so that a sticking contact (most of a packed bed)
+     * needs no square root; the outcome differs only when a force equals its
+     * limit to the last bit.
+     * @param gap Gap (negative: overlap) in m.
+     * @param n Unit normal from the first body to the second.
+     * @param vrel Velocity of the second body's contact point relative to
+     * the first's.
+     */
+    template <typename Material>
+    inline double
+    contact_law(const Material &m,
+                const double    sqrt_mass,
+                const double    gap,
+                const V3       &n,
+                const V3       &vrel,
+                const double    h,
+                V3             &spring,
+                V3             &ft)
+    {
+      const double vn       = dot(vrel, n);
+      const double eta_n    = m.cn * sqrt_mass;
+      const double eta_t    = m.ct * sqrt_mass;
+      const V3     vt       = vrel - vn * n;
+      const double fn       = m.kn * (-gap) - eta_n * vn;
+      V3           xi       = spring - dot(spring, n) * n;
+      xi                    = xi + h * vt;
+      const double fn_pos   = std::max(fn, 0.);
+      const double lim      = m.mu_s * fn_pos;
+      ft                    = (-m.kt) * xi;
+      const double elastic2 = dot(ft, ft);
+      if (elastic2 > lim * lim)
+        {
+          const double len = std::sqrt(elastic2);
+          ft = len > 0. ? (m.mu_d * fn_pos / len) * ft : V3{0., 0., 0.};
+          xi = m.kt > 0. ? V3{-ft.x / m.kt, -ft.y / m.kt, -ft.z / m.kt} :
+                           V3{0., 0., 0.};
+        }
+      else
+        {
+          ft                  = ft - eta_t * vt;
+          const double total2 = dot(ft, ft);
+          if (total2 > lim * lim)
+            ft = (lim / std::sqrt(total2)) * ft;
+        }
+      spring = xi;
+      return fn;
+    }
+
+    template <typename T>
+    void
+    permute(std::vector<T> &v, const std::vector<unsigned int> &order)
+    {
+      std::vector<T> out(v.size());
+      for (std::size_t k = 0; k < order.size(); ++k)
+        out[k] = v[order[k]];
+      v.swap(out);
+    }
+  } // namespace
+
+
+
+  bool
+  SphereDem::can_handle(const RigidBody &body)
+  {
+    const ShapeType type = body.shape().type();
+    if (body.is_fixed())
+      return type == ShapeType::sphere || type == ShapeType::half_space;
+    return type == ShapeType::sphere && !body.rotation_locked();
+  }
+
+
+
+  SphereDem::SphereDem(const std::vector<RigidBody>       &bodies,
+                       const std::vector<ContactMaterial> &pair_materials,
+                       const unsigned int                  n_materials,
+                       const Settings                     &settings,
+                       const std::vector<ContactEdge>     &edges,
+                       const std::vector<Eigen::Vector3d> &list_positions)
+    : settings_(settings)
+    , n_materials_(n_materials)
+  {
+    for (const ContactMaterial &m : pair_materials)
+      materials_.push_back(
+        {m.stiffness,
+         m.tangential_stiffness,
+         2. * m.damping_ratio * std::sqrt(m.stiffness),
+         2. * m.damping_ratio * std::sqrt(m.tangential_stiffness),
+         m.static_friction,
+         m.dynamic_friction});
+    const bool saved_list = list_positions.size() == bodies.size();
+    std::vector<Eigen::Vector3d> list_x;
+    for (BodyId id = 0; id < bodies.size(); ++id)
+      {
+        const RigidBody       &b = bodies[id];
+        const Eigen::Vector3d &at
+          = saved_list ? list_positions[id] : b.position;
+        if (b.shape().type() == ShapeType::half_space)
+          {
+            wall_id_.push_back(id);
+            wall_material_.push_back(b.material());
+            wall_list_position_.push_back(at);
+            continue;
+          }
+        id_.push_back(id);
+        radius_.push_back(b.bounding_radius());
+        inverse_mass_.push_back(b.inverse_mass());
+        // isotropic: one principal moment stands for the tensor
+        inverse_inertia_.push_back(b.inverse_principal_inertia()[0]);
+        material_.push_back(b.material());
+        list_x.push_back(at);
+      }
+    const std::size_t n = id_.size();
+    x_.assign(n, Eigen::Vector3d::Zero());
+    v_ = w_ = f_ = t_ = applied_f_ = applied_t_ = x_;
+    q_.assign(n, Eigen::Quaterniond::Identity());
+    const std::size_t n_walls = wall_id_.size();
+    wall_normal_.assign(n_walls, Eigen::Vector3d::Zero());
+    wall_position_ = wall_v_ = wall_w_ = wall_normal_;
+    wall_offset_.assign(n_walls, 0.);
+    read_walls(bodies);
+
+    // The springs of the general path's contact points (its loads belong
+    // to a finished step: each step starts its own).
+    std::vector<History> springs;
+    for (const ContactEdge &e : edges)
+      if (e.manifold.points.size() == 1)
+        springs.push_back(
+          {pair_key(e.manifold.a, e.manifold.b),
+           e.manifold.points[0].dem_spring,
+           Load{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.}});
+    rebuild(list_x, std::move(springs), false);
+  }
+
+
+
+  void
+  SphereDem::read_walls(const std::vector<RigidBody> &bodies)
+  {
+    for (std::size_t w = 0; w < wall_id_.size(); ++w)
+      {
+        const RigidBody &b  = bodies[wall_id_[w]];
+        const auto      &hs = static_cast<const HalfSpace &>(b.shape());
+        wall_normal_[w]     = b.orientation * hs.normal;
+        wall_offset_[w]     = hs.offset + wall_normal_[w].dot(b.position);
+        wall_position_[w]   = b.position;
+        wall_v_[w]          = b.linear_velocity;
+        wall_w_[w]          = b.angular_velocity;
+      }
+  }
+
+
+
+  void
+  SphereDem::gather(const std::vector<RigidBody> &bodies)
+  {
+    // The World's bodies are the state between steps (the coupling and the
+    // user may have changed them); the list is stale when anything moved
+    // more than half the skin since it was built, as on the general path.
+    const double limit = 0.25 * settings_.skin * settings_.skin;
+    bool         stale = false;
+    for (std::size_t k = 0; k < id_.size(); ++k)
+      {
+        const RigidBody &b = bodies[id_[k]];
+        x_[k]              = b.position;
+        q_[k]              = b.orientation;
+        v_[k]              = b.linear_velocity;
+        w_[k]              = b.angular_velocity;
+        applied_f_[k]      = b.force;
+        applied_t_[k]      = b.torque;
+        if (settings_.fluid_density > 0. && !b.is_fixed())
+          applied_f_[k]
+            -= settings_.fluid_density * b.volume() * settings_.gravity;
+        stale |= (x_[k] - x_list_[k]).squaredNorm() > limit;
+      }
+    read_walls(bodies);
+    for (std::size_t w = 0; w < wall_id_.size(); ++w)
+      stale
+        |= (wall_position_[w] - wall_list_position_[w]).squaredNorm() > limit;
+    rebuild_needed_ = rebuild_needed_ || stale;
+  }
+
+
+
+  void
+  SphereDem::scatter(std::vector<RigidBody> &bodies) const
+  {
+    for (std::size_t k = 0; k < id_.size(); ++k)
+      {
+        RigidBody &b = bodies[id_[k]];
+        if (inverse_mass_[k] > 0.)
+          {
+            b.position         = x_[k];
+            b.orientation      = q_[k];
+            b.linear_velocity  = v_[k];
+            b.angular_velocity = w_[k];
+          }
+        b.clear_accumulators();
+      }
+    for (const BodyId id : wall_id_)
+      bodies[id].clear_accumulators();
+  }
+
+
+
+  std::vector<SphereDem::History>
+  SphereDem::history() const
+  {
+    std::vector<History> h;
+    h.reserve(pairs_.size() + walls_.size());
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      h.push_back({pair_key(id_[pairs_[k].i], id_[pairs_[k].j]),
+                   pairs_[k].spring,
+                   pair_loads_[k]});
+    for (std::size_t k = 0; k < walls_.size(); ++k)
+      {
+        // general-path convention: spring and impulse of the larger id
+        const BodyId s = id_[walls_[k].sphere], w = wall_id_[walls_[k].wall];
+        const double sign = w < s ? 1. : -1.;
+        Load         load = wall_loads_[k];
+        load.impulse *= sign;
+        h.push_back({pair_key(s, w), sign * walls_[k].spring, load});
+      }
+    return h;
+  }
+
+
+
+  void
+  SphereDem::rebuild(std::vector<Eigen::Vector3d> list_x,
+                     std::vector<History>         history,
+                     const bool                   keep_dropped)
+  {
+    const double reach = settings_.margin + settings_.offset + settings_.skin;
+    const SphereNeighbourSearch search(list_x, radius_, reach);
+    const auto                 &order = search.order();
+    permute(id_, order);
+    permute(x_, order);
+    permute(v_, order);
+    permute(w_, order);
+    permute(q_, order);
+    permute(applied_f_, order);
+    permute(applied_t_, order);
+    permute(radius_, order);
+    permute(inverse_mass_, order);
+    permute(inverse_inertia_, order);
+    permute(material_, order);
+    x_list_.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      x_list_[k] = list_x[order[k]];
+    for (std::size_t w = 0; w < wall_id_.size(); ++w)
+      wall_list_position_[w] = wall_position_[w];
+
+    std::sort(history.begin(),
+              history.end(),
+              [](const History &a, const History &b) { return a.key < b.key; });
+    std::vector<bool> used(history.size(), false);
+    auto              find = [&](const std::uint64_t key) -> long {
+      const auto it = std::lower_bound(history.begin(),
+                                       history.end(),
+                                       key,
+                                       [](const History &a, std::uint64_t b) {
+                                         return a.key < b;
+                                       });
+      if (it == history.end() || it->key != key)
+        return -1;
+      used[it - history.begin()] = true;
+      return it - history.begin();
+    };
+    const Load zero{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.};
+
+    pairs_.clear();
+    pair_loads_.clear();
+    for (const auto &[k, l] : search.pairs())
+      {
+        if (inverse_mass_[k] == 0. && inverse_mass_[l] == 0.)
+          continue; // two fixed spheres
+        // the smaller id first, as body a of the general path
+        const std::uint32_t i = id_[k] < id_[l] ? k : l, j = i == k ? l : k;
+        SpherePair          p{i,
+                     j,
+                     material_[i] * n_materials_ + material_[j],
+                     std::sqrt(1. / (inverse_mass_[i] + inverse_mass_[j])),
+                     Eigen::Vector3d::Zero()};
+        Load                load = zero;
+        const long          h    = find(pair_key(id_[i], id_[j]));
+        if (h >= 0)
+          {
+            p.spring = history[h].spring;
+            load     = history[h].load;
+          }
+        pairs_.push_back(p);
+        pair_loads_.push_back(load);
+      }
+
+    walls_.clear();
+    wall_loads_.clear();
+    for (std::uint32_t k = 0; k < id_.size(); ++k)
+      {
+        if (inverse_mass_[k] == 0.)
+          continue;
+        for (std::uint32_t w = 0; w < wall_id_.size(); ++w)
+          {
+            const double gap
+              = wall_normal_[w].dot(x_list_[k]) - wall_offset_[w] - radius_[k];
+            if (gap > reach)
+              continue;
+            const BodyId s = id_[k], b = wall_id_[w];
+            WallPair     p{k,
+                       w,
+                       b < s ? wall_material_[w] * n_materials_ + material_[k] :
+                                   material_[k] * n_materials_ + wall_material_[w],
+                       std::sqrt(1. / inverse_mass_[k]),
+                       Eigen::Vector3d::Zero()};
+            Load         load = zero;
+            const long   h    = find(pair_key(s, b));
+            if (h >= 0)
+              {
+                const double sign = b < s ? 1. : -1.;
+                p.spring          = sign * history[h].spring;
+                load              = history[h].load;
+                load.impulse *= sign;
+              }
+            walls_.push_back(p);
+            wall_loads_.push_back(load);
+          }
+      }
+
+    // Pairs that left the list keep the forces they had during this step.
+    if (keep_dropped)
+      for (std::size_t h = 0; h < history.size(); ++h)
+        if (!used[h] && history[h].load.weight > 0.)
+          dropped_.emplace_back(history[h].key, history[h].load);
+    rebuild_needed_ = false;
+  }
+
+
+
+  void
+  SphereDem::contact_forces(const double h,
+                            const bool   first_substep,
+                            const bool   last_substep)
+  {
+    const double offset = settings_.offset, margin = settings_.margin;
+    double       deepest  = 0.;
+    unsigned int contacts = 0;
+    auto         record   = [&](Load &load, const V3 &F, const V3 &point) {
+      const V3     impulse = h * F;
+      const double weight  = std::sqrt(dot(impulse, impulse));
+      if (first_substep)
+        {
+          store(load.impulse, impulse);
+          store(load.moment, weight * point);
+          load.weight = weight;
+        }
+      else
+        {
+          add_to(load.impulse, impulse);
+          add_to(load.moment, weight * point);
+          load.weight += weight;
+        }
+    };
+    auto separated = [&](Eigen::Vector3d &spring, Load &load) {
+      spring.setZero();
+      if (first_substep)
+        load = Load{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.};
+    };
+
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      {
+        SpherePair  &p  = pairs_[k];
+        const V3     xa = load(x_[p.i]), xb = load(x_[p.j]);
+        const double ra = radius_[p.i], rb = radius_[p.j];
+        const V3     d    = xb - xa;
+        const double dist = std::sqrt(dot(d, d));
+        const double gap  = dist - ra - rb - offset;
+        if (last_substep && gap <= margin)
+          {
+            ++contacts;
+            deepest = std::max(deepest, -gap);
+          }
+        if (gap >= 0.)
+          {
+            separated(p.spring, pair_loads_[k]);
+            continue;
+          }
+        // The contact point lies on the line of centres, at s_a n from a's
+        // centre and -s_b n from b's: the relative velocity needs one cross
+        // product, and only the tangential force has a torque.
+        const V3     n  = dist > 0. ? (1. / dist) * d : V3{0., 0., 1.};
+        const double sa = ra + 0.5 * (gap + offset), sb = dist - sa;
+        const V3     vrel = (load(v_[p.j]) - load(v_[p.i]))
+                        - cross(sa * load(w_[p.i]) + sb * load(w_[p.j]), n);
+        V3           spring = load(p.spring), ft;
+        const double fn     = contact_law(materials_[p.material],
+                                      p.sqrt_mass,
+                                      gap,
+                                      n,
+                                      vrel,
+                                      h,
+                                      spring,
+                                      ft);
+        store(p.spring, spring);
+        const V3 F = fn * n + ft, turn = cross(n, ft);
+        add_to(f_[p.j], F);
+        add_to(t_[p.j], (-sb) * turn);
+        add_to(f_[p.i], (-1.) * F);
+        add_to(t_[p.i], (-sa) * turn);
+        record(pair_loads_[k], F, xa + sa * n);
+      }
+
+    for (std::size_t k = 0; k < walls_.size(); ++k)
+      {
+        WallPair              &p = walls_[k];
+        const Eigen::Vector3d &x = x_[p.sphere], &n = wall_normal_[p.wall];
+        const double           r = radius_[p.sphere];
+        // sphere_plane() of the narrow phase, then the offset
+        const double raw = n.dot(x) - wall_offset_[p.wall] - r;
+        const double gap = raw - offset;
+        if (last_substep && gap <= margin)
+          {
+            ++contacts;
+            deepest = std::max(deepest, -gap);
+          }
+        if (gap >= 0.)
+          {
+            separated(p.spring, wall_loads_[k]);
+            continue;
+          }
+        const Eigen::Vector3d point = 0.5 * ((x - r * n) + (x - (r + raw) * n));
+        const Eigen::Vector3d lever_wall = point - wall_position_[p.wall];
+        const Eigen::Vector3d lever      = point - x;
+        const Eigen::Vector3d vrel = v_[p.sphere] + w_[p.sphere].cross(lever)
+                                     - wall_v_[p.wall]
+                                     - wall_w_[p.wall].cross(lever_wall);
+        V3           spring = load(p.spring), ft;
+        const double fn     = contact_law(materials_[p.material],
+                                      p.sqrt_mass,
+                                      gap,
+                                      load(n),
+                                      load(vrel),
+                                      h,
+                                      spring,
+                                      ft);
+        store(p.spring, spring);
+        const V3 F = fn * load(n) + ft;
+        add_to(f_[p.sphere], F);
+        add_to(t_[p.sphere], cross(load(lever), F));
+        record(wall_loads_[k], F, load(point));
+      }
+    if (last_substep)
+      {
+        max_penetration_ = deepest;
+        contacts_        = contacts;
+      }
+  }
+
+
+
+  bool
+  SphereDem::integrate(const double h)
+  {
+    const double          limit = 0.25 * settings_.skin * settings_.skin;
+    const Eigen::Vector3d g     = settings_.gravity;
+    bool                  stale = false;
+    for (std::size_t k = 0; k < id_.size(); ++k)
+      {
+        const double im = inverse_mass_[k];
+        if (im == 0.) // fixed sphere: it neither accelerates nor moves
+          {
+            f_[k].setZero();
+            t_[k].setZero();
+            continue;
+          }
+        // DemSolver's velocity kick ...
+        v_[k] += h * (im * (applied_f_[k] + f_[k]) + g);
+        const Eigen::Vector3d T = applied_t_[k] + t_[k];
+        if (T.squaredNorm() > 0.)
+          w_[k] += h * (inverse_inertia_[k] * T);
+        f_[k].setZero();
+        t_[k].setZero();
+        // ... and NewtonEulerIntegrator's drift and exact rotation of an
+        // isotropic body.
+        x_[k] += h * v_[k];
+        const Eigen::Vector3d &w = w_[k];
+        if (w.squaredNorm() > 0.)
+          {
+            const Eigen::Quaterniond dq(
+              Eigen::AngleAxisd(w.norm() * h, w.normalized()));
+            q_[k] = (dq * q_[k]).normalized();
+          }
+        stale |= (x_[k] - x_list_[k]).squaredNorm() > limit;
+      }
+    return stale;
+  }
+
+
+
+  void
+  SphereDem::step(std::vector<RigidBody> &bodies,
+                  const unsigned int      n_substeps,
+                  const double            h,
+                  StepStatistics         &stats)
+  {
+    auto t0 = Clock::now();
+    gather(bodies);
+    dropped_.clear();
+    stats.time_broad += seconds_since(t0);
+    for (unsigned int s = 0; s < n_substeps; ++s)
+      {
+        t0 = Clock::now();
+        if (rebuild_needed_)
+          rebuild(x_, history(), s > 0);
+        stats.time_broad += seconds_since(t0);
+
+        t0 = Clock::now();
+        contact_forces(h, s == 0, s + 1 == n_substeps);
+        stats.time_solve += seconds_since(t0);
+
+        t0              = Clock::now();
+        rebuild_needed_ = integrate(h);
+        stats.time_integrate += seconds_since(t0);
+      }
+    t0 = Clock::now();
+    scatter(bodies);
+    stats.time_integrate += seconds_since(t0);
+    stats.pairs             = pairs_.size() + walls_.size();
+    stats.contacts          = contacts_;
+    stats.solver_iterations = 1;
+  }
+
+
+
+  void
+  SphereDem::append_contact_forces(const double               dt,
+                                   std::vector<ContactForce> &out) const
+  {
+    auto add = [&](const BodyId a, const BodyId b, const Load &load) {
+      if (!(load.weight > 0.))
+        return;
+      const Eigen::Vector3d F = load.impulse / dt; // on b
+      const Eigen::Vector3d p = load.moment / load.weight;
+      out.push_back({b, a, p, F});
+      out.push_back({a, b, p, -F});
+    };
+    for (const History &h : history())
+      add(h.key >> 32, h.key & 0xffffffffu, h.load);
+    for (const auto &[key, load] : dropped_)
+      add(key >> 32, key & 0xffffffffu, load);
+  }
+
+
+
+  void
+  SphereDem::export_state(const std::vector<RigidBody> &bodies,
+                          std::vector<ContactEdge>     &edges,
+                          std::vector<ContactEdge>     &dropped,
+                          std::vector<Eigen::Vector3d> &list_positions) const
+  {
+    auto edge = [](const std::uint64_t key, const Load &load) {
+      ContactEdge e;
+      e.manifold.a   = key >> 32;
+      e.manifold.b   = key & 0xffffffffu;
+      e.step_impulse = load.impulse;
+      e.step_moment  = load.moment;
+      e.step_weight  = load.weight;
+      return e;
+    };
+    // Contact points as the general narrow phase makes them, from the
+    // current positions; a point also for a spring that must survive.
+    auto add_point = [&](ContactEdge           &e,
+                         const Eigen::Vector3d &position,
+                         const Eigen::Vector3d &normal,
+                         const double           gap,
+                         const Eigen::Vector3d &spring) {
+      if (gap > settings_.margin && spring.squaredNorm() == 0.)
+        return;
+      ContactPoint c;
+      c.position   = position;
+      c.normal     = normal;
+      c.distance   = gap;
+      c.local_a    = bodies[e.manifold.a].to_body(position);
+      c.dem_spring = spring;
+      e.manifold.points.push_back(c);
+      e.state = EdgeState::persistent_contact;
+    };
+    const std::vector<History> h = history();
+    edges.clear();
+    for (std::size_t k = 0; k < pairs_.size(); ++k)
+      {
+        const SpherePair      &p  = pairs_[k];
+        ContactEdge            e  = edge(h[k].key, h[k].load);
+        const Eigen::Vector3d &xa = x_[p.i], d = x_[p.j] - xa;
+        const double           dist = d.norm();
+        const double           gap
+          = dist - radius_[p.i] - radius_[p.j] - settings_.offset;
+        const Eigen::Vector3d n
+          = dist > 0. ? Eigen::Vector3d(d / dist) : Eigen::Vector3d::UnitZ();
+        add_point(e,
+                  xa + (radius_[p.i] + 0.5 * (gap + settings_.offset)) * n,
+                  n,
+                  gap,
+                  h[k].spring);
+        edges.push_back(std::move(e));
+      }
+    for (std::size_t k = 0; k < walls_.size(); ++k)
+      {
+        const WallPair        &p = walls_[k];
+        const History         &r = h[pairs_.size() + k];
+        ContactEdge            e = edge(r.key, r.load);
+        const Eigen::Vector3d &x = x_[p.sphere], &n = wall_normal_[p.wall];
+        const double           radius = radius_[p.sphere];
+        const double           raw = n.dot(x) - wall_offset_[p.wall] - radius;
+        const bool             wall_first = wall_id_[p.wall] < id_[p.sphere];
+        add_point(e,
+                  0.5 * ((x - radius * n) + (x - (radius + raw) * n)),
+                  wall_first ? n : Eigen::Vector3d(-n),
+                  raw - settings_.offset,
+                  r.spring);
+        edges.push_back(std::move(e));
+      }
+    std::sort(edges.begin(),
+              edges.end(),
+              [](const ContactEdge &a, const ContactEdge &b) {
+                return a.manifold.a != b.manifold.a ?
+                         a.manifold.a < b.manifold.a :
+                         a.manifold.b < b.manifold.b;
+              });
+    dropped.clear();
+    for (const auto &[key, load] : dropped_)
+      dropped.push_back(edge(key, load));
+    list_positions.resize(bodies.size());
+    for (std::size_t k = 0; k < id_.size(); ++k)
+      list_positions[id_[k]] = x_list_[k];
+    for (std::size_t w = 0; w < wall_id_.size(); ++w)
+      list_positions[wall_id_[w]] = wall_list_position_[w];
+  }
+} // namespace particulate::rigid
