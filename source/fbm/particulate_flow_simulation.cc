@@ -755,14 +755,7 @@ namespace particulate {
             << "/ (flow.pvd, particles.pvd, particle_*.dat, flow.dat)"
             << std::endl;
       timer.print_wall_time_statistics(communicator);
-      for (const auto &[section, seconds] :
-           timer.get_summary_data(TimerOutput::total_wall_time))
-        summary.phase_seconds[section]
-          = Utilities::MPI::max(seconds, communicator);
-      summary.phase_calls     = timer.get_summary_data(TimerOutput::n_calls);
-      summary.n_velocity_dofs = flow.n_velocity_dofs();
-      summary.flow_memory_bytes
-        = Utilities::MPI::sum(flow.memory_consumption(), communicator);
+      fluid::collect_run_profile(timer, flow, communicator, summary);
       if (flow_inspector)
         flow_inspector(flow);
       return summary;

@@ -5,6 +5,7 @@
 #include <particulate/deformation/deformation_parameters.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/fluid/flow_simulation.h>
+#include <particulate/fluid/run_profile.h>
 
 #include <Eigen/Core>
 
@@ -53,8 +54,9 @@ namespace particulate {
     read_particulate_flow_case(const std::string &filename,
                                const std::string &overrides = "");
 
-    /** What a run measured; used by tests and the final summary. */
-    struct ParticulateFlowSummary
+    /** What a run measured; used by tests and the final summary (and, by
+     *  its RunProfile, the benchmarks). */
+    struct ParticulateFlowSummary : fluid::RunProfile
     {
       unsigned int  n_steps  = 0;
       double        end_time = 0.;
@@ -64,17 +66,6 @@ namespace particulate {
       /// per particle, the largest speed reached and when [m/s, s]
       std::vector<double> max_speed, time_of_max_speed;
       double              wall_seconds = 0.;
-
-      // for profiles (tests/performance/fbm)
-      /// wall seconds per timer section, the slowest rank's
-      std::map<std::string, double> phase_seconds;
-      /// how often each timer section ran (rank 0)
-      std::map<std::string, double> phase_calls;
-      /// summed over all steps and stages
-      unsigned long nonlinear_iterations = 0, linear_iterations = 0;
-      unsigned long n_velocity_dofs = 0;
-      /// the flow solver's matrices, preconditioners and vectors, all ranks
-      std::size_t flow_memory_bytes = 0;
     };
 
     /**

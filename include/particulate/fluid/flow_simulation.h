@@ -4,10 +4,13 @@
 #include <particulate/core/mesh.h>
 #include <particulate/core/simulation_parameters.h>
 #include <particulate/fluid/fluid_parameters.h>
+#include <particulate/fluid/run_profile.h>
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <string>
+#include <utility>
 
 #include <mpi.h>
 
@@ -28,8 +31,9 @@ namespace particulate {
       parse(dealii::ParameterHandler &prm);
     };
 
-    /** What a run measured last; used by tests and the final summary. */
-    struct FlowRunSummary
+    /** What a run measured last; used by tests and the final summary (and,
+     *  by its RunProfile, the benchmarks). */
+    struct FlowRunSummary : RunProfile
     {
       unsigned int  n_steps                 = 0;
       double        end_time                = 0.;
@@ -40,6 +44,7 @@ namespace particulate {
       double        pressure_difference     = 0.;
       double        kinetic_energy          = 0.;
       unsigned long n_dofs                  = 0;
+      unsigned long n_cells                 = 0;
       double        wall_seconds            = 0.;
     };
 
@@ -64,10 +69,22 @@ namespace particulate {
       FlowRunSummary
       run();
 
+      /**
+       * @p inspector sees the flow solver at the end of run() (on every
+       * rank; benchmarks time its matrix there).
+       */
+      void
+      set_flow_inspector(
+        std::function<void(const NavierStokes<dim> &)> inspector)
+      {
+        flow_inspector = std::move(inspector);
+      }
+
     private:
-      const FlowCaseParameters &parameters;
-      const std::string         parameter_file;
-      MPI_Comm                  communicator;
+      std::function<void(const NavierStokes<dim> &)> flow_inspector;
+      const FlowCaseParameters                      &parameters;
+      const std::string                              parameter_file;
+      MPI_Comm                                       communicator;
     };
   } // namespace fluid
 } // namespace particulate

@@ -1,0 +1,38 @@
+#include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/run_profile.h>
+
+#include <deal.II/base/mpi.h>
+
+namespace particulate {
+  namespace fluid {
+    using namespace dealii;
+
+    template <int dim>
+    void
+    collect_run_profile(const TimerOutput       &timer,
+                        const NavierStokes<dim> &flow,
+                        MPI_Comm                 comm,
+                        RunProfile              &profile)
+    {
+      // the slowest rank sets the pace of a step
+      for (const auto &[section, seconds] :
+           timer.get_summary_data(TimerOutput::total_wall_time))
+        profile.phase_seconds[section] = Utilities::MPI::max(seconds, comm);
+      profile.phase_calls     = timer.get_summary_data(TimerOutput::n_calls);
+      profile.n_velocity_dofs = flow.n_velocity_dofs();
+      profile.flow_memory_bytes
+        = Utilities::MPI::sum(flow.memory_consumption(), comm);
+    }
+
+    template void
+    collect_run_profile(const TimerOutput &,
+                        const NavierStokes<2> &,
+                        MPI_Comm,
+                        RunProfile &);
+    template void
+    collect_run_profile(const TimerOutput &,
+                        const NavierStokes<3> &,
+                        MPI_Comm,
+                        RunProfile &);
+  } // namespace fluid
+} // namespace particulate
