@@ -1,6 +1,7 @@
 #include <particulate/rigid/body_state_writer.h>
 
 #include <iomanip>
+#include <limits>
 #include <stdexcept>
 
 namespace particulate::rigid {
@@ -36,9 +37,13 @@ namespace particulate::rigid {
         if (b.is_fixed())
           continue;
         pe -= b.mass() * world.parameters().gravity.dot(b.position);
+        // NaN: the world records no contact forces
         Eigen::Vector3d f = Eigen::Vector3d::Zero();
-        for (const auto &c : world.contact_forces(id))
-          f += c.force;
+        if (world.parameters().record_contact_forces)
+          for (const auto &c : world.contact_forces(id))
+            f += c.force;
+        else
+          f.setConstant(std::numeric_limits<double>::quiet_NaN());
         const auto &q = b.orientation;
         bodies_ << t << ' ' << id << ' ' << b.position[0] << ' '
                 << b.position[1] << ' ' << b.position[2] << ' ' << q.w() << ' '

@@ -160,6 +160,8 @@ namespace particulate::rigid {
       throw std::out_of_range("rigid::World::body(): no body with id "
                               + std::to_string(id) + " (there are "
                               + std::to_string(bodies_.size()) + ").");
+    sync_bodies();
+    bodies_written_ = true;
     return bodies_[id];
   }
 
@@ -168,7 +170,22 @@ namespace particulate::rigid {
   const RigidBody &
   World::body(const BodyId id) const
   {
-    return const_cast<World *>(this)->body(id);
+    if (id >= bodies_.size())
+      throw std::out_of_range("rigid::World::body(): no body with id "
+                              + std::to_string(id) + " (there are "
+                              + std::to_string(bodies_.size()) + ").");
+    sync_bodies();
+    return bodies_[id];
+  }
+
+
+
+  void
+  World::sync_bodies() const
+  {
+    if (bodies_behind_ && sphere_dem_)
+      sphere_dem_->write_bodies(bodies_);
+    bodies_behind_ = false;
   }
 
 
@@ -217,7 +234,9 @@ namespace particulate::rigid {
     if (parameters_.contact_solver != ContactSolverType::dem
         || !parameters_.sphere_fast_path || n_general_only_ > 0)
       return false;
-    // rotation locks may be set at any time
+    // rotation locks may be set at any time, through body()
+    if (sphere_dem_ && !bodies_written_)
+      return true;
     return std::none_of(bodies_.begin(), bodies_.end(), [](const RigidBody &b) {
       return b.rotation_locked();
     });
@@ -228,6 +247,8 @@ namespace particulate::rigid {
   void
   World::hand_back_sphere_dem()
   {
+    sync_bodies();
+    bodies_written_ = true;
     sphere_dem_->export_state(bodies_,
                               graph_.edges(),
                               dropped_,
@@ -242,6 +263,7 @@ namespace particulate::rigid {
   {
     if (!sphere_dem_)
       return graph_;
+    sync_bodies();
     std::vector<ContactEdge>     dropped;
     std::vector<Eigen::Vector3d> positions;
     graph_snapshot_ = ContactGraph();
@@ -440,12 +462,13 @@ namespace particulate::rigid {
     if (!sphere_dem_)
       {
         SphereDem::Settings settings;
-        settings.margin        = margin_;
-        settings.offset        = parameters_.contact_offset;
-        settings.skin          = skin_;
-        settings.gravity       = parameters_.gravity;
-        settings.fluid_density = parameters_.fluid_density;
-        sphere_dem_            = std::make_unique<SphereDem>(bodies_,
+        settings.margin                = margin_;
+        settings.offset                = parameters_.contact_offset;
+        settings.skin                  = skin_;
+        settings.gravity               = parameters_.gravity;
+        settings.fluid_density         = parameters_.fluid_density;
+        settings.record_contact_forces = parameters_.record_contact_forces;
+        sphere_dem_                    = std::make_unique<SphereDem>(bodies_,
                                                   pair_materials_,
                                                   materials_.size(),
                                                   settings,
@@ -456,7 +479,15 @@ namespace particulate::rigid {
         dropped_.clear();
         broad_positions_.clear();
       }
-    sphere_dem_->step(bodies_, n_sub, h, stats_);
+    // The arrays of the sphere path are the state between steps; the bodies
+    // are read only when they may have changed, and written when read.
+    const auto t0 = Clock::now();
+    if (bodies_written_)
+      sphere_dem_->read_bodies(bodies_);
+    stats_.time_broad += seconds_since(t0);
+    sphere_dem_->step(n_sub, h, stats_);
+    bodies_written_ = false;
+    bodies_behind_  = true;
   }
 
 
@@ -572,6 +603,10 @@ namespace particulate::rigid {
   const std::vector<ContactForce> &
   World::all_contact_forces() const
   {
+    if (!parameters_.record_contact_forces)
+      throw std::logic_error(
+        "rigid::World::all_contact_forces(): this world does not record "
+        "contact forces (WorldParameters::record_contact_forces is false).");
     assemble_contact_forces();
     return contact_forces_;
   }
@@ -581,6 +616,10 @@ namespace particulate::rigid {
   std::vector<ContactForce>
   World::contact_forces(const BodyId id) const
   {
+    if (!parameters_.record_contact_forces)
+      throw std::logic_error(
+        "rigid::World::contact_forces(): this world does not record contact "
+        "forces (WorldParameters::record_contact_forces is false).");
     assemble_contact_forces();
     if (id >= bodies_.size())
       throw std::out_of_range("rigid::World::contact_forces(): no body "
@@ -598,6 +637,7 @@ namespace particulate::rigid {
   double
   World::kinetic_energy() const
   {
+    sync_bodies();
     double e = 0.;
     for (const RigidBody &b : bodies_)
       e += b.kinetic_energy();
@@ -623,6 +663,7 @@ namespace particulate::rigid {
   std::uint64_t
   World::state_hash() const
   {
+    sync_bodies();
     std::uint64_t h   = 1469598103934665603ull;
     auto          mix = [&h](const double x) {
       std::uint64_t bits;

@@ -52,6 +52,7 @@ namespace particulate::rigid {
   void
   World::save_state(std::ostream &out) const
   {
+    sync_bodies();
     put(out, format_tag);
     put(out, time_);
     put(out, step_number_);
@@ -128,6 +129,9 @@ namespace particulate::rigid {
       throw std::runtime_error("the saved world has " + std::to_string(n)
                                + " bodies and this one "
                                + std::to_string(bodies_.size()));
+    // the file replaces the sphere path's state, read from bodies_ next
+    bodies_behind_  = false;
+    bodies_written_ = true;
     for (RigidBody &b : bodies_)
       {
         if (get<int>(in) != static_cast<int>(b.shape().type()))

@@ -30,7 +30,12 @@ namespace particulate::rigid {
    *   - a flat Verlet list of sphere pairs and one of sphere-wall pairs,
    *     each entry carrying the tangential spring (the contact history);
    *   - per entry, the impulse accumulated over the current step, for the
-   *     contact forces that the coupling reads (World::contact_forces).
+   *     contact forces that the coupling reads (World::contact_forces),
+   *     unless Settings::record_contact_forces is off.
+   * These arrays are the state of the spheres between steps: the World
+   * copies them to its RigidBody objects (write_bodies()) only when they
+   * are read, and back (read_bodies()) only when they may have been
+   * changed.
    * A substep is one pass over each list (forces) and one over the spheres
    * (velocity kick, then drift and rotation), as in Algorithm 7.
    *
@@ -75,6 +80,8 @@ namespace particulate::rigid {
       /** Density in kg/m^3 of the surrounding fluid, for the buoyancy
        * (WorldParameters::fluid_density). */
       double fluid_density = 0.;
+      /** Whether to sum the impulses per pair for contact forces(). */
+      bool record_contact_forces = true;
     };
 
     /** Whether this class can move @p body: a dynamic sphere free to
@@ -103,18 +110,30 @@ namespace particulate::rigid {
               const std::vector<Eigen::Vector3d> &list_positions);
 
     /**
-     * Advances the bodies by @p n_substeps substeps of @p h seconds: reads
-     * their state and their force and torque accumulators (plus buoyancy,
-     * constant over the step), steps, writes the positions, orientations
-     * and velocities back and clears the accumulators, as World::step()
-     * does on the general path.
+     * Takes the state of the spheres (positions, orientations, velocities)
+     * and of the walls from @p bodies, and their force and torque
+     * accumulators as the applied loads of the next step (plus buoyancy,
+     * constant over the step); clears the accumulators. The World calls
+     * this before a step when the bodies may have changed since the last
+     * one.
+     */
+    void
+    read_bodies(std::vector<RigidBody> &bodies);
+
+    /** Writes positions, orientations and velocities of the dynamic spheres
+     * to @p bodies. */
+    void
+    write_bodies(std::vector<RigidBody> &bodies) const;
+
+    /**
+     * Advances the spheres held here by @p n_substeps substeps of @p h
+     * seconds under the loads of the last read_bodies() (buoyancy only
+     * without one), as World::step() does on the general path; the applied
+     * loads then fall back to the buoyancy.
      * @param stats Receives pairs, contacts and the stage times.
      */
     void
-    step(std::vector<RigidBody> &bodies,
-         unsigned int            n_substeps,
-         double                  h,
-         StepStatistics         &stats);
+    step(unsigned int n_substeps, double h, StepStatistics &stats);
 
     /** Appends the contact forces of the last step of length @p dt, two
      * entries per touching pair as in World::contact_forces(), unsorted. */
@@ -181,10 +200,6 @@ namespace particulate::rigid {
 
     void
     read_walls(const std::vector<RigidBody> &bodies);
-    void
-    gather(const std::vector<RigidBody> &bodies);
-    void
-    scatter(std::vector<RigidBody> &bodies) const;
     /** Re-sorts the spheres and rebuilds both lists around @p list_x (by
      * value: it is often x_, which the sort permutes), carrying the springs
      * and loads of @p history over. */
@@ -194,8 +209,10 @@ namespace particulate::rigid {
             bool                         keep_dropped);
     std::vector<History>
     history() const;
+    template <bool record>
     void
     contact_forces(double h, bool first_substep, bool last_substep);
+    template <bool loads>
     bool
     integrate(double h);
 
@@ -204,8 +221,10 @@ namespace particulate::rigid {
     unsigned int              n_materials_;
 
     // Spheres, in spatial order.
-    std::vector<BodyId>             id_;
-    std::vector<Eigen::Vector3d>    x_, v_, w_, f_, t_, applied_f_, applied_t_;
+    std::vector<BodyId>          id_;
+    std::vector<Eigen::Vector3d> x_, v_, w_, f_, t_, applied_f_, applied_t_;
+    /** -rho_f V g of a dynamic sphere (0 for a fixed one). */
+    std::vector<Eigen::Vector3d>    buoyancy_;
     std::vector<Eigen::Vector3d>    x_list_;
     std::vector<Eigen::Quaterniond> q_;
     std::vector<double>             radius_, inverse_mass_, inverse_inertia_;
@@ -225,7 +244,9 @@ namespace particulate::rigid {
     std::vector<Load>                           wall_loads_;
     std::vector<std::pair<std::uint64_t, Load>> dropped_;
 
-    bool         rebuild_needed_  = false;
+    bool rebuild_needed_ = false;
+    /** Whether applied_f_, applied_t_ hold more than the buoyancy. */
+    bool         loads_applied_   = false;
     double       max_penetration_ = 0.;
     unsigned int contacts_        = 0;
   };

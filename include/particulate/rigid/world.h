@@ -54,6 +54,11 @@ namespace particulate::rigid {
      * sphere-only path (SphereDem: same physics, several times faster).
      * false keeps the general path (for comparisons and tests). */
     bool sphere_fast_path = true;
+    /** Whether steps sum the impulse of every contact for contact_forces()
+     * and all_contact_forces() (the fluid coupling and the body output need
+     * them). false saves that work (about a tenth of a DEM step of packed
+     * spheres); those calls then throw. */
+    bool record_contact_forces = true;
 
     /** Throws std::invalid_argument naming the bad entry. */
     void
@@ -86,6 +91,14 @@ namespace particulate::rigid {
    * orientation, U, omega (world frame), mass(), inertia_world(),
    * volume(), bounding_radius() from RigidBody, and after the step the
    * contact forces with contact_forces(id).
+   *
+   * On the sphere-only DEM path the World keeps the state of the spheres
+   * in SphereDem's arrays and copies it into the RigidBody objects only
+   * when they are asked for (body(), bodies() and the functions that read
+   * them). A reference or pointer to a body kept across a step therefore
+   * shows the new state once any of these has been called after the step
+   * (any body() call copies all bodies), and changes made through it count
+   * when they follow a call of the non-const body() after the last step.
    */
   class World
   {
@@ -130,6 +143,7 @@ namespace particulate::rigid {
     const std::vector<RigidBody> &
     bodies() const
     {
+      sync_bodies();
       return bodies_;
     }
     /** Material @p i. */
@@ -241,9 +255,19 @@ namespace particulate::rigid {
     step_sphere_dem(unsigned int n_sub, double h);
     void
     step_general(unsigned int n_sub, double h);
+    /** Copies the sphere-only path's state into bodies_ if it is newer. */
+    void
+    sync_bodies() const;
 
-    WorldParameters              parameters_;
-    std::vector<RigidBody>       bodies_;
+    WorldParameters parameters_;
+    /** The bodies; on the sphere-only path a copy of its state, brought up
+     * to date by sync_bodies() (hence mutable). */
+    mutable std::vector<RigidBody> bodies_;
+    /** bodies_ are older than the sphere-only path's state. */
+    mutable bool bodies_behind_ = false;
+    /** bodies_ may have been changed since the sphere-only path last read
+     * them (a non-const body() call): the next step reads them. */
+    bool                         bodies_written_ = true;
     std::vector<Material>        materials_;
     std::vector<ContactMaterial> pair_materials_;
     HierarchicalHashGrid         grid_;

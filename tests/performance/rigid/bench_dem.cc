@@ -6,10 +6,14 @@
 // of substeps. Prints ns of thread CPU time per particle-substep, split
 // over the stages. By default the World takes its sphere-only DEM path
 // (SphereDem); `general` forces the general path (contact graph, DemSolver)
-// for comparison.
-// Usage: bench_rigid_dem [n] [steps] [fast|general]
+// for comparison; `no-forces` turns off the recording of contact forces
+// (WorldParameters::record_contact_forces); `read` reads every body after
+// every step (as output or a coupling would), which makes the sphere path
+// copy its state into the RigidBody objects each step.
+// Usage: bench_rigid_dem [n] [steps] [general] [no-forces] [read]
 #include <particulate/rigid/scene.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,12 +28,20 @@ main(int argc, char **argv)
 {
   const unsigned int n       = argc > 1 ? std::atoi(argv[1]) : 100000;
   const unsigned int steps   = argc > 2 ? std::atoi(argv[2]) : 20;
-  const bool         general = argc > 3 && std::string(argv[3]) == "general";
-  SceneDescription   scene;
+  bool               general = false, record = true, read = false;
+  for (int a = 3; a < argc; ++a)
+    {
+      const std::string flag = argv[a];
+      general |= flag == "general";
+      record &= flag != "no-forces";
+      read |= flag == "read";
+    }
+  SceneDescription scene;
   scene.world.contact_solver        = ContactSolverType::dem;
   scene.world.substeps              = 1;
   scene.world.dem_steps_per_contact = 20.;
   scene.world.sphere_fast_path      = !general;
+  scene.world.record_contact_forces = record;
   auto &m                           = scene.materials[0];
   m.density                         = 2500.;
   m.restitution                     = 0.5;
@@ -73,7 +85,7 @@ main(int argc, char **argv)
     = M_PI * std::sqrt(0.4 * m_s / 2.e3 * 2.); // pair stiffness k/2 (series)
   const double dt = tc / 20.;
   w.step(dt); // warm-up: builds the grid and the contact graph
-  double        tb = 0., tn = 0., ts = 0., ti = 0.;
+  double        tb = 0., tn = 0., ts = 0., ti = 0., sum = 0.;
   unsigned long substeps = 0;
   auto          cpu      = [] {
     timespec t;
@@ -84,6 +96,15 @@ main(int argc, char **argv)
   for (unsigned int s = 0; s < steps; ++s)
     {
       w.step(dt);
+      if (read)
+        {
+          const auto t_read = std::chrono::steady_clock::now();
+          for (const RigidBody &b : w.bodies())
+            sum += b.position[2];
+          ti += std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                              - t_read)
+                  .count();
+        }
       const auto &st = w.statistics();
       tb += st.time_broad;
       tn += st.time_narrow;
@@ -104,8 +125,10 @@ main(int argc, char **argv)
   std::printf(
     "| path | spheres | substeps | contacts | total ns/particle-step | broad | narrow+graph | "
     "solve | integrate |\n|---|---|---|---|---|---|---|---|---|\n");
-  std::printf("| %s | %u | %lu | %u | %.0f | %.0f | %.0f | %.0f | %.0f |\n",
+  std::printf("| %s%s%s | %u | %lu | %u | %.0f | %.0f | %.0f | %.0f | %.0f |\n",
               w.uses_sphere_fast_path() ? "spheres only" : "general",
+              record ? "" : ", no forces",
+              read ? ", bodies read" : "",
               n,
               substeps,
               w.statistics().contacts,
@@ -117,5 +140,9 @@ main(int argc, char **argv)
   std::printf("max penetration %.3g r, kinetic energy %.3g J\n",
               w.max_penetration() / r,
               w.kinetic_energy());
+  if (read)
+    std::printf("(bodies read after every step, counted as integrate; "
+                "checksum %.6g)\n",
+                sum);
   return 0;
 }
