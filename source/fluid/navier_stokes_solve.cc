@@ -289,10 +289,9 @@ namespace particulate {
       TimerOutput::Scope scope(timer, "fluid: linear solve");
       const bool         steady = stage.time_step == 0.;
       const double       mu     = viscosity_model->reference_viscosity();
-      const bool         least_squares_commutator
-        = steady
-          || parameters.linear_solver.schur_approximation
-               == "least-squares commutator";
+      const std::string &schur  = parameters.linear_solver.schur_approximation;
+      const bool least_squares_commutator = schur == "least-squares commutator"
+                                            || (schur == "automatic" && steady);
       const PressurePoissonSolver laplace_inverse(
         pressure_laplacian,
         *laplace_amg,

@@ -87,8 +87,8 @@ namespace particulate {
       double       relative_tolerance = 1e-4;
       unsigned int maximum_iterations = 1000;
       unsigned int krylov_size        = 100;
-      /// "Cahouet-Chabard" or "least-squares commutator"
-      std::string schur_approximation        = "Cahouet-Chabard";
+      /// "automatic", "Cahouet-Chabard" or "least-squares commutator"
+      std::string schur_approximation        = "automatic";
       double      pressure_poisson_tolerance = 1e-2;
       /// "AMG" or "Chebyshev" (Jacobi-Chebyshev polynomial, no hierarchy)
       std::string  velocity_preconditioner = "AMG";
