@@ -5,6 +5,9 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <algorithm>
+#include <iterator>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace particulate {
@@ -16,6 +19,31 @@ namespace particulate {
       const fluid::NavierStokes<dim> &flow)
       : flow(flow)
     {}
+
+
+
+    template <int dim>
+    FictitiousBoundary<dim>::~FictitiousBoundary() = default;
+
+
+
+    template <int dim>
+    void
+    FictitiousBoundary<dim>::use_containment_engine(const cuda::Backend backend)
+    {
+      engine = std::make_unique<cuda::ContainmentEngine>(backend);
+      engine_shapes.clear();
+    }
+
+
+
+    template <int dim>
+    std::string
+    FictitiousBoundary<dim>::containment_method() const
+    {
+      return engine ? "cuda/ containment engine on " + engine->device_name() :
+                      "hash grid (double precision)";
+    }
 
 
 
@@ -79,6 +107,10 @@ namespace particulate {
           }
       grid = std::make_unique<geometry::PointHashGrid>(positions);
       node_body.assign(positions.size(), -1);
+      positions_float.resize(3 * positions.size());
+      for (std::size_t i = 0; i < positions.size(); ++i)
+        for (unsigned int d = 0; d < 3; ++d)
+          positions_float[3 * i + d] = float(positions[i][d]);
     }
 
 
@@ -87,6 +119,11 @@ namespace particulate {
     void
     FictitiousBoundary<dim>::classify(const std::vector<Body> &bodies)
     {
+      if (engine)
+        {
+          classify_with_engine(bodies);
+          return;
+        }
       std::fill(node_body.begin(), node_body.end(), -1);
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
@@ -107,6 +144,59 @@ namespace particulate {
               node_body[i] = b;
           });
         }
+    }
+
+
+
+    template <int dim>
+    void
+    FictitiousBoundary<dim>::classify_with_engine(
+      const std::vector<Body> &bodies)
+    {
+      std::vector<cuda::BodyInstance> instances(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const rigid::RigidBody &body = *bodies[b].body;
+          const auto              type = body.shape().type();
+          if (!(type == rigid::ShapeType::sphere
+                || (dim == 2 && type == rigid::ShapeType::cylinder)))
+            throw std::invalid_argument(
+              "fbm::FictitiousBoundary: the cuda/ containment engine takes "
+              "spheres (and disks in 2D) only; use 'Containment backend = "
+              "cpu' in subsection 'Particles' for other shapes.");
+          // one uploaded one-sphere set per radius, centred at the body
+          // origin
+          const double radius = bodies[b].radius;
+          auto         shape
+            = std::find_if(engine_shapes.begin(),
+                           engine_shapes.end(),
+                           [&](const auto &s) { return s.first == radius; });
+          if (shape == engine_shapes.end())
+            {
+              cuda::InnerSphereData sphere;
+              sphere.cx = {0.f};
+              sphere.cy = {0.f};
+              sphere.cz = {0.f};
+              sphere.r  = {float(radius)};
+              engine_shapes.emplace_back(radius,
+                                         engine->add_inner_spheres(sphere));
+              shape = std::prev(engine_shapes.end());
+            }
+          instances[b].shape      = shape->second;
+          const Eigen::Matrix3d R = body.orientation.toRotationMatrix();
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              for (unsigned int j = 0; j < 3; ++j)
+                instances[b].R[3 * i + j] = float(R(i, j));
+              instances[b].t[i] = float(body.position[i]);
+            }
+        }
+      engine->classify(positions_float.data(),
+                       positions.size(),
+                       instances.data(),
+                       instances.size(),
+                       node_body.data(),
+                       nullptr);
     }
 
 

@@ -1,3 +1,4 @@
+#include <particulate/cuda/containment_engine.h>
 #include <particulate/fbm/particle_parameters.h>
 
 #include <deal.II/base/utilities.h>
@@ -203,6 +204,17 @@ namespace particulate {
                         "1",
                         Patterns::Integer(1),
                         "Rigid-body substeps per fluid time step.");
+      prm.declare_entry(
+        "Containment backend",
+        "auto",
+        Patterns::Selection("auto|cpu|cuda"),
+        "How the velocity nodes inside the particles are found every step. "
+        "cpu: a hash grid over the nodes and the particles' exact signed "
+        "distances in double precision. cuda: the cuda/ library's "
+        "containment kernel on the GPU (float arithmetic; a node within "
+        "about 1e-7 of the particle size from its surface may be "
+        "classified differently than by cpu); needs a CUDA build and a "
+        "device. auto: cuda when a device is present, cpu otherwise.");
       prm.leave_subsection();
     }
 
@@ -280,10 +292,19 @@ namespace particulate {
           }
         return faces;
       };
-      walls           = read_faces("Domain walls");
-      symmetry_planes = read_faces("Symmetry planes");
-      substeps        = prm.get_integer("Rigid substeps");
+      walls               = read_faces("Domain walls");
+      symmetry_planes     = read_faces("Symmetry planes");
+      substeps            = prm.get_integer("Rigid substeps");
+      containment_backend = prm.get("Containment backend");
       prm.leave_subsection();
+      if (containment_backend == "cuda"
+          && !cuda::ContainmentEngine::cuda_device_available())
+        fail("Containment backend",
+             cuda::ContainmentEngine::cuda_compiled() ?
+               "'cuda' needs a CUDA device and this machine has none; set "
+               "'auto' or 'cpu'." :
+               "'cuda' needs a build with CUDA (nvcc was not found when "
+               "this build was configured); set 'auto' or 'cpu'.");
 
       if (dim == 2)
         {

@@ -289,6 +289,10 @@ namespace particulate {
 
       FictitiousBoundary<dim> interface(flow);
       interface.setup();
+      if (particle_p.containment_backend == "cuda"
+          || (particle_p.containment_backend == "auto"
+              && cuda::ContainmentEngine::cuda_device_available()))
+        interface.use_containment_engine(cuda::Backend::cuda);
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
       for (const auto id : ids)
         interface_bodies.push_back({&world.body(id), particle_p.radius});
@@ -299,7 +303,8 @@ namespace particulate {
             << " pressure) on " << Utilities::MPI::n_mpi_processes(communicator)
             << " rank(s); " << particle_p.n_particles()
             << " particle(s); contact distance " << world_p.contact_offset
-            << " m" << std::endl;
+            << " m\nContainment: " << interface.containment_method()
+            << std::endl;
 
       // --- state ---------------------------------------------------------
       const unsigned int           n = ids.size();

@@ -1,6 +1,7 @@
 #ifndef particulate_fbm_fictitious_boundary_h
 #define particulate_fbm_fictitious_boundary_h
 
+#include <particulate/cuda/containment_engine.h>
 #include <particulate/fluid/navier_stokes.h>
 #include <particulate/geometry/point_hash_grid.h>
 #include <particulate/rigid/world.h>
@@ -11,6 +12,8 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -42,6 +45,23 @@ namespace particulate {
       };
 
       explicit FictitiousBoundary(const fluid::NavierStokes<dim> &flow);
+      ~FictitiousBoundary();
+
+      /**
+       * Let classify() use the cuda/ library's ContainmentEngine on
+       * @p backend (cuda::Backend::cuda: the GPU; cuda::Backend::cpu: its
+       * CPU path, the same float arithmetic) instead of the hash grid with
+       * the bodies' exact signed distances. The engine sees each body as a
+       * one-sphere inner-sphere set of the body's radius: exact for spheres
+       * and, in 2D, for disks (their nodes lie in their plane); other
+       * shapes are refused. Call before or after setup().
+       */
+      void
+      use_containment_engine(cuda::Backend backend);
+
+      /** "hash grid" or the engine's device name. */
+      std::string
+      containment_method() const;
 
       /** Collect the velocity nodes; call again after the mesh changed. */
       void
@@ -95,6 +115,13 @@ namespace particulate {
         return nodes_per_cell_;
       }
 
+      /** Number of collected nodes (locally relevant). */
+      unsigned int
+      n_nodes() const
+      {
+        return positions.size();
+      }
+
       const Eigen::Vector3d &
       node_position(const unsigned int i) const
       {
@@ -108,6 +135,14 @@ namespace particulate {
       std::vector<std::array<DofIndex, 3>>     node_dofs;
       std::unique_ptr<geometry::PointHashGrid> grid;
       std::vector<int>                         node_body;
+      /// the engine path: its engine, the node positions as floats, one
+      /// uploaded sphere shape per radius
+      std::unique_ptr<cuda::ContainmentEngine> engine;
+      std::vector<float>                       positions_float;
+      std::vector<std::pair<double, int>>      engine_shapes;
+
+      void
+      classify_with_engine(const std::vector<Body> &bodies);
       std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> cells;
       std::vector<unsigned int> nodes_of_cells;
       unsigned int              nodes_per_cell_ = 0;

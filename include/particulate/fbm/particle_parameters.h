@@ -64,6 +64,8 @@ namespace particulate {
       /// the order x-, x+, y-, y+, z-, z+
       std::array<bool, 6> walls    = {{true, true, true, true, true, true}};
       unsigned int        substeps = 1;
+      /// "auto", "cpu" or "cuda": how the FBM finds the nodes inside bodies
+      std::string containment_backend = "auto";
       /// faces of the mesh's bounding box that are mirror planes of the
       /// set-up (x-, x+, y-, y+, z-, z+): the particles lie on them, and the
       /// loads integrated over the part of each body inside the mesh are
