@@ -4,18 +4,15 @@
 #include <particulate/rigid/world.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
-namespace particulate::rigid {
-  namespace {
-    using Clock = std::chrono::steady_clock;
-    double
-    seconds_since(const Clock::time_point &t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
+#include "phase_clock.h"
 
+namespace particulate::rigid {
+  using detail::Clock;
+  using detail::seconds_since;
+
+  namespace {
     /** History key of the pair of bodies a < b. */
     std::uint64_t
     pair_key(const BodyId a, const BodyId b)

@@ -5,22 +5,17 @@
 #include <particulate/rigid/world.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "phase_clock.h"
+
 namespace particulate::rigid {
-  namespace {
-    using Clock = std::chrono::steady_clock;
-    double
-    seconds_since(const Clock::time_point &t0)
-    {
-      return std::chrono::duration<double>(Clock::now() - t0).count();
-    }
-  } // namespace
+  using detail::Clock;
+  using detail::seconds_since;
 
 
 

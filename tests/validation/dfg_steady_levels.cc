@@ -21,6 +21,7 @@
 
 #include <particulate/fluid/flow_simulation.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
