@@ -5,6 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+
+#ifdef __SSE2__
+#  include <emmintrin.h>
+#endif
 
 #include "phase_clock.h"
 
@@ -129,6 +134,154 @@ namespace particulate::rigid {
       spring = xi;
       return fn;
     }
+
+#ifdef __SSE2__
+    /**
+     * Two sphere pairs side by side, one per lane of an SSE2 register, for
+     * the pair loop. Per pair the loop is one chain of dependent operations
+     * (square root, division, contact law, then a square root for the
+     * impulse's magnitude) longer than the processor can overlap with the
+     * next pair's chain; two lanes run two chains in the time of one. SSE2
+     * is part of baseline x86-64, and each lane rounds exactly as the scalar
+     * instructions do, so the result is bit for bit that of the scalar
+     * loop (V3) and does not depend on the processor.
+     */
+    struct P3
+    {
+      __m128d x, y, z;
+    };
+    inline __m128d
+    lanes(const double &a, const double &b)
+    {
+      return _mm_loadh_pd(_mm_load_sd(&a), &b);
+    }
+    inline P3
+    lanes(const Eigen::Vector3d &a, const Eigen::Vector3d &b)
+    {
+      return {lanes(a[0], b[0]), lanes(a[1], b[1]), lanes(a[2], b[2])};
+    }
+    inline P3
+    operator+(const P3 &a, const P3 &b)
+    {
+      return {_mm_add_pd(a.x, b.x), _mm_add_pd(a.y, b.y), _mm_add_pd(a.z, b.z)};
+    }
+    inline P3
+    operator-(const P3 &a, const P3 &b)
+    {
+      return {_mm_sub_pd(a.x, b.x), _mm_sub_pd(a.y, b.y), _mm_sub_pd(a.z, b.z)};
+    }
+    inline P3
+    operator*(const __m128d s, const P3 &a)
+    {
+      return {_mm_mul_pd(s, a.x), _mm_mul_pd(s, a.y), _mm_mul_pd(s, a.z)};
+    }
+    inline __m128d
+    dot(const P3 &a, const P3 &b)
+    {
+      return _mm_add_pd(_mm_add_pd(_mm_mul_pd(a.x, b.x), _mm_mul_pd(a.y, b.y)),
+                        _mm_mul_pd(a.z, b.z));
+    }
+    inline P3
+    cross(const P3 &a, const P3 &b)
+    {
+      return {_mm_sub_pd(_mm_mul_pd(a.y, b.z), _mm_mul_pd(a.z, b.y)),
+              _mm_sub_pd(_mm_mul_pd(a.z, b.x), _mm_mul_pd(a.x, b.z)),
+              _mm_sub_pd(_mm_mul_pd(a.x, b.y), _mm_mul_pd(a.y, b.x))};
+    }
+    /** Sign flipped: exact, as the scalar unary minus. */
+    inline __m128d
+    negated(const __m128d a)
+    {
+      return _mm_xor_pd(a, _mm_set1_pd(-0.));
+    }
+    /** Per lane: @p mask ? @p a : @p b. */
+    inline __m128d
+    select(const __m128d mask, const __m128d a, const __m128d b)
+    {
+      return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b));
+    }
+    inline P3
+    select(const __m128d mask, const P3 &a, const P3 &b)
+    {
+      return {select(mask, a.x, b.x),
+              select(mask, a.y, b.y),
+              select(mask, a.z, b.z)};
+    }
+    template <int lane>
+    inline double
+    get(const __m128d a)
+    {
+      return _mm_cvtsd_f64(lane == 0 ? a : _mm_unpackhi_pd(a, a));
+    }
+    template <int lane>
+    inline V3
+    get(const P3 &a)
+    {
+      return {get<lane>(a.x), get<lane>(a.y), get<lane>(a.z)};
+    }
+
+    /**
+     * contact_law() for two contacts, one per lane, with the same
+     * operations in the same order; the branches become selections, and
+     * the square roots and divisions of the limited forces are taken only
+     * when a lane needs them.
+     */
+    template <typename Material>
+    inline __m128d
+    contact_law(const Material &m0,
+                const Material &m1,
+                const __m128d   sqrt_mass,
+                const __m128d   gap,
+                const P3       &n,
+                const P3       &vrel,
+                const __m128d   h,
+                P3             &spring,
+                P3             &ft)
+    {
+      const __m128d zero = _mm_setzero_pd();
+      const __m128d kn = lanes(m0.kn, m1.kn), kt = lanes(m0.kt, m1.kt);
+      const __m128d mu_s  = lanes(m0.mu_s, m1.mu_s);
+      const __m128d vn    = dot(vrel, n);
+      const __m128d eta_n = _mm_mul_pd(lanes(m0.cn, m1.cn), sqrt_mass);
+      const __m128d eta_t = _mm_mul_pd(lanes(m0.ct, m1.ct), sqrt_mass);
+      const P3      vt    = vrel - vn * n;
+      const __m128d fn
+        = _mm_sub_pd(_mm_mul_pd(kn, negated(gap)), _mm_mul_pd(eta_n, vn));
+      P3 xi = spring - dot(spring, n) * n;
+      xi    = xi + h * vt;
+      // std::max(fn, 0.): fn unless 0 > fn
+      const __m128d fn_pos   = _mm_max_pd(zero, fn);
+      const __m128d lim      = _mm_mul_pd(mu_s, fn_pos);
+      const __m128d lim2     = _mm_mul_pd(lim, lim);
+      ft                     = negated(kt) * xi;
+      const __m128d elastic2 = dot(ft, ft);
+      const __m128d slip     = _mm_cmpgt_pd(elastic2, lim2);
+      P3            ft_slip = ft, xi_slip = xi;
+      if (_mm_movemask_pd(slip) != 0)
+        {
+          const __m128d len = _mm_sqrt_pd(elastic2);
+          const __m128d scale
+            = _mm_div_pd(_mm_mul_pd(lanes(m0.mu_d, m1.mu_d), fn_pos), len);
+          const P3 zero3{zero, zero, zero};
+          ft_slip = select(_mm_cmpgt_pd(len, zero), scale * ft, zero3);
+          xi_slip = select(_mm_cmpgt_pd(kt, zero),
+                           P3{_mm_div_pd(negated(ft_slip.x), kt),
+                              _mm_div_pd(negated(ft_slip.y), kt),
+                              _mm_div_pd(negated(ft_slip.z), kt)},
+                           zero3);
+        }
+      P3            ft_stick = ft - eta_t * vt;
+      const __m128d total2   = dot(ft_stick, ft_stick);
+      const __m128d capped   = _mm_andnot_pd(slip, _mm_cmpgt_pd(total2, lim2));
+      if (_mm_movemask_pd(capped) != 0)
+        ft_stick = select(capped,
+                          _mm_div_pd(lim, _mm_sqrt_pd(total2)) * ft_stick,
+                          ft_stick);
+      ft     = select(slip, ft_slip, ft_stick);
+      spring = select(slip, xi_slip, xi);
+      return fn;
+    }
+#endif
 
     /**
      * @p q turned by the angular velocity @p w (|w|^2 = @p w2) over @p h
@@ -483,23 +636,29 @@ namespace particulate::rigid {
     const double offset = settings_.offset, margin = settings_.margin;
     double       deepest  = 0.;
     unsigned int contacts = 0;
-    auto         add_load = [&](Load &load, const V3 &F, const V3 &point) {
-      if constexpr (!record)
-        return;
-      const V3     impulse = h * F;
-      const double weight  = std::sqrt(dot(impulse, impulse));
+    auto         sum_load = [&](Load        &load,
+                        const V3    &impulse,
+                        const double weight,
+                        const V3    &moment) {
       if (first_substep)
         {
           store(load.impulse, impulse);
-          store(load.moment, weight * point);
+          store(load.moment, moment);
           load.weight = weight;
         }
       else
         {
           add_to(load.impulse, impulse);
-          add_to(load.moment, weight * point);
+          add_to(load.moment, moment);
           load.weight += weight;
         }
+    };
+    auto add_load = [&](Load &load, const V3 &F, const V3 &point) {
+      if constexpr (!record)
+        return;
+      const V3     impulse = h * F;
+      const double weight  = std::sqrt(dot(impulse, impulse));
+      sum_load(load, impulse, weight, weight * point);
     };
     auto separated = [&](Eigen::Vector3d &spring, Load &load) {
       spring.setZero();
@@ -507,48 +666,161 @@ namespace particulate::rigid {
         load = Load{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.};
     };
 
-    for (std::size_t k = 0; k < pairs_.size(); ++k)
+    auto one_pair = [&](const std::size_t k) {
+      SpherePair  &p  = pairs_[k];
+      const V3     xa = load(x_[p.i]), xb = load(x_[p.j]);
+      const double ra = radius_[p.i], rb = radius_[p.j];
+      const V3     d    = xb - xa;
+      const double dist = std::sqrt(dot(d, d));
+      const double gap  = dist - ra - rb - offset;
+      if (last_substep && gap <= margin)
+        {
+          ++contacts;
+          deepest = std::max(deepest, -gap);
+        }
+      if (gap >= 0.)
+        {
+          separated(p.spring, pair_loads_[k]);
+          return;
+        }
+      // The contact point lies on the line of centres, at s_a n from a's
+      // centre and -s_b n from b's: the relative velocity needs one cross
+      // product, and only the tangential force has a torque.
+      const V3     n  = dist > 0. ? (1. / dist) * d : V3{0., 0., 1.};
+      const double sa = ra + 0.5 * (gap + offset), sb = dist - sa;
+      const V3     vrel = (load(v_[p.j]) - load(v_[p.i]))
+                      - cross(sa * load(w_[p.i]) + sb * load(w_[p.j]), n);
+      V3           spring = load(p.spring), ft;
+      const double fn     = contact_law(materials_[p.material],
+                                    p.sqrt_mass,
+                                    gap,
+                                    n,
+                                    vrel,
+                                    h,
+                                    spring,
+                                    ft);
+      store(p.spring, spring);
+      const V3 F = fn * n + ft, turn = cross(n, ft);
+      add_to(f_[p.j], F);
+      add_to(t_[p.j], (-sb) * turn);
+      add_to(f_[p.i], (-1.) * F);
+      add_to(t_[p.i], (-sa) * turn);
+      add_load(pair_loads_[k], F, xa + sa * n);
+    };
+
+    std::size_t k = 0;
+#ifdef __SSE2__
+    const __m128d h2 = _mm_set1_pd(h), zero = _mm_setzero_pd();
+    // One lane's part of the loop body after the two contact laws: the same
+    // stores and sums as one_pair(), in pair order.
+    auto finish = [&](auto          lane,
+                      SpherePair   &p,
+                      Load         &load,
+                      const __m128d gap,
+                      const P3     &spring,
+                      const P3     &F,
+                      const P3     &Tj,
+                      const P3     &Ti,
+                      const P3     &impulse,
+                      const __m128d weight,
+                      const P3     &moment) {
+      constexpr int l = decltype(lane)::value;
+      const double  g = get<l>(gap);
+      if (last_substep && g <= margin)
+        {
+          ++contacts;
+          deepest = std::max(deepest, -g);
+        }
+      if (g >= 0.)
+        {
+          separated(p.spring, load);
+          return;
+        }
+      store(p.spring, get<l>(spring));
+      add_to(f_[p.j], get<l>(F));
+      add_to(t_[p.j], get<l>(Tj));
+      add_to(f_[p.i], get<l>(P3{negated(F.x), negated(F.y), negated(F.z)}));
+      add_to(t_[p.i], get<l>(Ti));
+      if constexpr (record)
+        sum_load(load, get<l>(impulse), get<l>(weight), get<l>(moment));
+    };
+    for (; k + 1 < pairs_.size(); k += 2)
       {
-        SpherePair  &p  = pairs_[k];
-        const V3     xa = load(x_[p.i]), xb = load(x_[p.j]);
-        const double ra = radius_[p.i], rb = radius_[p.j];
-        const V3     d    = xb - xa;
-        const double dist = std::sqrt(dot(d, d));
-        const double gap  = dist - ra - rb - offset;
-        if (last_substep && gap <= margin)
+        SpherePair   &p0 = pairs_[k], &p1 = pairs_[k + 1];
+        const P3      xa   = lanes(x_[p0.i], x_[p1.i]);
+        const P3      xb   = lanes(x_[p0.j], x_[p1.j]);
+        const __m128d ra   = lanes(radius_[p0.i], radius_[p1.i]);
+        const __m128d rb   = lanes(radius_[p0.j], radius_[p1.j]);
+        const P3      d    = xb - xa;
+        const __m128d dist = _mm_sqrt_pd(dot(d, d));
+        const __m128d gap  = _mm_sub_pd(_mm_sub_pd(_mm_sub_pd(dist, ra), rb),
+                                       _mm_set1_pd(offset));
+        const __m128d touching = _mm_cmplt_pd(gap, zero);
+        if (_mm_movemask_pd(touching) == 0)
           {
-            ++contacts;
-            deepest = std::max(deepest, -gap);
-          }
-        if (gap >= 0.)
-          {
-            separated(p.spring, pair_loads_[k]);
+            // neither touches: the scalar body only counts and clears
+            one_pair(k);
+            one_pair(k + 1);
             continue;
           }
-        // The contact point lies on the line of centres, at s_a n from a's
-        // centre and -s_b n from b's: the relative velocity needs one cross
-        // product, and only the tangential force has a torque.
-        const V3     n  = dist > 0. ? (1. / dist) * d : V3{0., 0., 1.};
-        const double sa = ra + 0.5 * (gap + offset), sb = dist - sa;
-        const V3     vrel = (load(v_[p.j]) - load(v_[p.i]))
-                        - cross(sa * load(w_[p.i]) + sb * load(w_[p.j]), n);
-        V3           spring = load(p.spring), ft;
-        const double fn     = contact_law(materials_[p.material],
-                                      p.sqrt_mass,
-                                      gap,
-                                      n,
-                                      vrel,
-                                      h,
-                                      spring,
-                                      ft);
-        store(p.spring, spring);
-        const V3 F = fn * n + ft, turn = cross(n, ft);
-        add_to(f_[p.j], F);
-        add_to(t_[p.j], (-sb) * turn);
-        add_to(f_[p.i], (-1.) * F);
-        add_to(t_[p.i], (-sa) * turn);
-        add_load(pair_loads_[k], F, xa + sa * n);
+        const P3      n = select(_mm_cmpgt_pd(dist, zero),
+                            _mm_div_pd(_mm_set1_pd(1.), dist) * d,
+                            P3{zero, zero, _mm_set1_pd(1.)});
+        const __m128d sa
+          = _mm_add_pd(ra,
+                       _mm_mul_pd(_mm_set1_pd(0.5),
+                                  _mm_add_pd(gap, _mm_set1_pd(offset))));
+        const __m128d sb = _mm_sub_pd(dist, sa);
+        const P3 vrel = (lanes(v_[p0.j], v_[p1.j]) - lanes(v_[p0.i], v_[p1.i]))
+                        - cross(sa * lanes(w_[p0.i], w_[p1.i])
+                                  + sb * lanes(w_[p0.j], w_[p1.j]),
+                                n);
+        P3            spring = lanes(p0.spring, p1.spring), ft;
+        const __m128d fn     = contact_law(materials_[p0.material],
+                                       materials_[p1.material],
+                                       lanes(p0.sqrt_mass, p1.sqrt_mass),
+                                       gap,
+                                       n,
+                                       vrel,
+                                       h2,
+                                       spring,
+                                       ft);
+        const P3      F = fn * n + ft, turn = cross(n, ft);
+        const P3      Tj = negated(sb) * turn, Ti       = negated(sa) * turn;
+        P3            impulse{zero, zero, zero}, moment = impulse;
+        __m128d       weight = zero;
+        if constexpr (record)
+          {
+            impulse = h2 * F;
+            weight  = _mm_sqrt_pd(dot(impulse, impulse));
+            moment  = weight * (xa + sa * n);
+          }
+        finish(std::integral_constant<int, 0>(),
+               p0,
+               pair_loads_[k],
+               gap,
+               spring,
+               F,
+               Tj,
+               Ti,
+               impulse,
+               weight,
+               moment);
+        finish(std::integral_constant<int, 1>(),
+               p1,
+               pair_loads_[k + 1],
+               gap,
+               spring,
+               F,
+               Tj,
+               Ti,
+               impulse,
+               weight,
+               moment);
       }
+#endif
+    for (; k < pairs_.size(); ++k)
+      one_pair(k);
 
     for (std::size_t k = 0; k < walls_.size(); ++k)
       {
@@ -623,39 +895,170 @@ namespace particulate::rigid {
     const double *const __restrict inverse_mass    = inverse_mass_.data();
     const double *const __restrict inverse_inertia = inverse_inertia_.data();
     const V3          zero{0., 0., 0.};
-    bool              stale = false;
-    const std::size_t n     = id_.size();
-    for (std::size_t k = 0; k < n; ++k)
+    bool              stale      = false;
+    const std::size_t n          = id_.size();
+    auto              one_sphere = [&](const std::size_t k) {
+      const double im = inverse_mass[k];
+      const V3     F = load(f[k]), T_contact = load(t[k]);
+      store(f[k], zero);
+      store(t[k], zero);
+      if (im == 0.) // fixed sphere: it neither accelerates nor moves
+        return;
+      // DemSolver's velocity kick ...
+      const V3 F_applied = loads   ? load(applied_f[k]) :
+                                        buoyant ? load(buoyancy[k]) :
+                                                  zero;
+      const V3 vk = load(v[k]) + h * (im * (F_applied + F) + g);
+      store(v[k], vk);
+      const V3 T = loads ? load(applied_t[k]) + T_contact : T_contact;
+      V3       wk = load(w[k]);
+      if (dot(T, T) > 0.)
+        {
+          wk = wk + h * (inverse_inertia[k] * T);
+          store(w[k], wk);
+        }
+      // ... and NewtonEulerIntegrator's drift and exact rotation of an
+      // isotropic body.
+      const V3 xk = load(x[k]) + h * vk;
+      store(x[k], xk);
+      const double w2 = dot(wk, wk);
+      if (w2 > 0.)
+        q[k] = rotated(q[k], wk, w2, h);
+      const V3 moved = xk - load(x_list[k]);
+      stale |= dot(moved, moved) > limit;
+    };
+
+    std::size_t k = 0;
+#ifdef __SSE2__
+    // Two spheres at a time, one per lane, as in the pair loop (bit for bit
+    // the scalar result): the renormalisation's square root and division
+    // end a chain of dependent operations per sphere. A fixed sphere, one
+    // that does not spin, and one that turns too far for the Taylor series
+    // take the scalar body.
+    const __m128d h2 = _mm_set1_pd(h), z = _mm_setzero_pd();
+    const P3      g2{_mm_set1_pd(g.x), _mm_set1_pd(g.y), _mm_set1_pd(g.z)};
+    auto          put = [](double *const a, double *const b, const P3 &v) {
+      _mm_storel_pd(a, v.x);
+      _mm_storel_pd(a + 1, v.y);
+      _mm_storel_pd(a + 2, v.z);
+      _mm_storeh_pd(b, v.x);
+      _mm_storeh_pd(b + 1, v.y);
+      _mm_storeh_pd(b + 2, v.z);
+    };
+    __m128d stale2 = z;
+    for (; k + 1 < n; k += 2)
       {
-        const double im = inverse_mass[k];
-        const V3     F = load(f[k]), T_contact = load(t[k]);
-        store(f[k], zero);
-        store(t[k], zero);
-        if (im == 0.) // fixed sphere: it neither accelerates nor moves
-          continue;
-        // DemSolver's velocity kick ...
-        const V3 F_applied = loads   ? load(applied_f[k]) :
-                             buoyant ? load(buoyancy[k]) :
-                                       zero;
-        const V3 vk        = load(v[k]) + h * (im * (F_applied + F) + g);
-        store(v[k], vk);
-        const V3 T  = loads ? load(applied_t[k]) + T_contact : T_contact;
-        V3       wk = load(w[k]);
-        if (dot(T, T) > 0.)
+        const __m128d im = lanes(inverse_mass[k], inverse_mass[k + 1]);
+        if (_mm_movemask_pd(_mm_cmpeq_pd(im, z)) != 0)
           {
-            wk = wk + h * (inverse_inertia[k] * T);
-            store(w[k], wk);
+            one_sphere(k);
+            one_sphere(k + 1);
+            continue;
           }
-        // ... and NewtonEulerIntegrator's drift and exact rotation of an
-        // isotropic body.
-        const V3 xk = load(x[k]) + h * vk;
-        store(x[k], xk);
-        const double w2 = dot(wk, wk);
-        if (w2 > 0.)
-          q[k] = rotated(q[k], wk, w2, h);
-        const V3 moved = xk - load(x_list[k]);
-        stale |= dot(moved, moved) > limit;
+        const P3 F = lanes(f[k], f[k + 1]), T_contact = lanes(t[k], t[k + 1]);
+        const P3 F_applied = loads   ? lanes(applied_f[k], applied_f[k + 1]) :
+                             buoyant ? lanes(buoyancy[k], buoyancy[k + 1]) :
+                                       P3{z, z, z};
+        const P3 vk  = lanes(v[k], v[k + 1]) + h2 * (im * (F_applied + F) + g2);
+        const P3 wk0 = lanes(w[k], w[k + 1]);
+        const P3 T = loads ? lanes(applied_t[k], applied_t[k + 1]) + T_contact :
+                             T_contact;
+        const P3 wk = select(
+          _mm_cmpgt_pd(dot(T, T), z),
+          wk0 + h2 * (lanes(inverse_inertia[k], inverse_inertia[k + 1]) * T),
+          wk0);
+        const __m128d w2 = dot(wk, wk);
+        const __m128d x2
+          = _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(0.25 * h), h2), w2); // (a/2)^2
+        if (_mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(w2, z),
+                                       _mm_cmple_pd(x2, _mm_set1_pd(0.01))))
+            != 3)
+          {
+            one_sphere(k);
+            one_sphere(k + 1);
+            continue;
+          }
+        put(f[k].data(), f[k + 1].data(), P3{z, z, z});
+        put(t[k].data(), t[k + 1].data(), P3{z, z, z});
+        put(v[k].data(), v[k + 1].data(), vk);
+        put(w[k].data(), w[k + 1].data(), wk);
+        const P3 xk = lanes(x[k], x[k + 1]) + h2 * vk;
+        put(x[k].data(), x[k + 1].data(), xk);
+        // rotated(), Taylor branch
+        const __m128d c = _mm_add_pd(
+          _mm_set1_pd(1.),
+          _mm_mul_pd(
+            x2,
+            _mm_add_pd(
+              _mm_set1_pd(-1. / 2.),
+              _mm_mul_pd(
+                x2,
+                _mm_add_pd(
+                  _mm_set1_pd(1. / 24.),
+                  _mm_mul_pd(
+                    x2,
+                    _mm_add_pd(_mm_set1_pd(-1. / 720.),
+                               _mm_mul_pd(x2, _mm_set1_pd(1. / 40320.)))))))));
+        const __m128d sn = _mm_mul_pd(
+          _mm_set1_pd(0.5 * h),
+          _mm_add_pd(
+            _mm_set1_pd(1.),
+            _mm_mul_pd(
+              x2,
+              _mm_add_pd(
+                _mm_set1_pd(-1. / 6.),
+                _mm_mul_pd(
+                  x2,
+                  _mm_add_pd(
+                    _mm_set1_pd(1. / 120.),
+                    _mm_mul_pd(x2,
+                               _mm_add_pd(_mm_set1_pd(-1. / 5040.),
+                                          _mm_mul_pd(x2,
+                                                     _mm_set1_pd(
+                                                       1. / 362880.))))))))));
+        Eigen::Quaterniond &q0 = q[k], &q1 = q[k + 1];
+        const __m128d       qx = lanes(q0.coeffs()[0], q1.coeffs()[0]),
+                      qy       = lanes(q0.coeffs()[1], q1.coeffs()[1]),
+                      qz       = lanes(q0.coeffs()[2], q1.coeffs()[2]),
+                      qw       = lanes(q0.coeffs()[3], q1.coeffs()[3]);
+        const __m128d dx = _mm_mul_pd(sn, wk.x), dy = _mm_mul_pd(sn, wk.y),
+                      dz = _mm_mul_pd(sn, wk.z);
+        auto mul
+          = [](const __m128d a, const __m128d b) { return _mm_mul_pd(a, b); };
+        const __m128d rw
+          = _mm_sub_pd(_mm_sub_pd(_mm_sub_pd(mul(c, qw), mul(dx, qx)),
+                                  mul(dy, qy)),
+                       mul(dz, qz));
+        const __m128d rx
+          = _mm_sub_pd(_mm_add_pd(_mm_add_pd(mul(c, qx), mul(dx, qw)),
+                                  mul(dy, qz)),
+                       mul(dz, qy));
+        const __m128d ry
+          = _mm_add_pd(_mm_add_pd(_mm_sub_pd(mul(c, qy), mul(dx, qz)),
+                                  mul(dy, qw)),
+                       mul(dz, qx));
+        const __m128d rz
+          = _mm_add_pd(_mm_sub_pd(_mm_add_pd(mul(c, qz), mul(dx, qy)),
+                                  mul(dy, qx)),
+                       mul(dz, qw));
+        const __m128d inv = _mm_div_pd(
+          _mm_set1_pd(1.),
+          _mm_sqrt_pd(_mm_add_pd(
+            _mm_add_pd(_mm_add_pd(mul(rw, rw), mul(rx, rx)), mul(ry, ry)),
+            mul(rz, rz))));
+        put(q0.coeffs().data(),
+            q1.coeffs().data(),
+            P3{mul(inv, rx), mul(inv, ry), mul(inv, rz)});
+        _mm_storel_pd(&q0.coeffs()[3], mul(inv, rw));
+        _mm_storeh_pd(&q1.coeffs()[3], mul(inv, rw));
+        const P3 moved = xk - lanes(x_list[k], x_list[k + 1]);
+        stale2         = _mm_or_pd(stale2,
+                           _mm_cmpgt_pd(dot(moved, moved), _mm_set1_pd(limit)));
       }
+    stale |= _mm_movemask_pd(stale2) != 0;
+#endif
+    for (; k < n; ++k)
+      one_sphere(k);
     return stale;
   }
 
