@@ -360,13 +360,18 @@ namespace particulate {
     create_mesh(const MeshParameters                           &p,
                 parallel::fullydistributed::Triangulation<dim> &tria)
     {
-      Triangulation<dim> serial;
+      // The levels of the uniform refinement go along (owned by the ranks
+      // that own their first children), so that geometric multigrid can
+      // use them; that needs the level-difference smoothing flag.
+      Triangulation<dim> serial(
+        Triangulation<dim>::limit_level_difference_at_vertices);
       create_serial_mesh(p, serial);
 
       const MPI_Comm comm = tria.get_communicator();
       GridTools::partition_triangulation_zorder(Utilities::MPI::n_mpi_processes(
                                                   comm),
                                                 serial);
+      GridTools::partition_multigrid_levels(serial);
 
       // Stateless manifolds (polar, cylindrical) carry over; a transfinite
       // interpolation refers to the serial coarse mesh and cannot, but the
@@ -383,7 +388,10 @@ namespace particulate {
           }
       tria.create_triangulation(
         TriangulationDescription::Utilities::
-          create_description_from_triangulation(serial, comm));
+          create_description_from_triangulation(
+            serial,
+            comm,
+            TriangulationDescription::Settings::construct_multigrid_hierarchy));
     }
 
 

@@ -265,7 +265,7 @@ namespace particulate {
       prm.declare_entry(
         "Velocity preconditioner",
         "AMG",
-        Patterns::Selection("AMG|Chebyshev"),
+        Patterns::Selection("AMG|Chebyshev|geometric multigrid"),
         "Approximate inverse of the velocity block inside the block "
         "preconditioner. AMG: one V-cycle of Trilinos ML, robust for any "
         "time step, but its set-up costs many Krylov iterations. Chebyshev: "
@@ -273,12 +273,21 @@ namespace particulate {
         "degree' with eigenvalue bounds estimated by a few CG steps; no "
         "set-up beyond that, and as good as AMG when the mass term rho/k "
         "dominates the viscous one (rho h^2 / (theta k mu) >> 1, small time "
-        "steps), useless for steady or viscous-dominated flow.");
+        "steps), useless for steady or viscous-dominated flow. geometric "
+        "multigrid: one V-cycle on the levels of the coarse mesh's uniform "
+        "refinement for the symmetric part rho/k M + theta mu (grad + "
+        "grad^T) of the block, applied without a matrix on every level "
+        "(single precision), Chebyshev smoothing of degree 'Chebyshev "
+        "degree' and a CG+AMG coarse solve; convection is left to FGMRES. "
+        "Rebuilt only when the stage's rho/k or theta change (or at every "
+        "Newton step for a shear-rate dependent viscosity). Needs a mesh "
+        "without hanging nodes and free-slip planes normal to an axis.");
       prm.declare_entry("Chebyshev degree",
                         "4",
                         Patterns::Integer(1, 50),
                         "Degree of the Chebyshev velocity preconditioner "
-                        "(matrix-vector products per application).");
+                        "(matrix-vector products per application), and of "
+                        "the multigrid smoother's polynomial.");
       prm.declare_entry("AMG elliptic",
                         "true",
                         Patterns::Bool(),

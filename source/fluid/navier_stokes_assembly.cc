@@ -42,6 +42,7 @@ namespace particulate {
         {
           system_matrix = 0;
           velocity_chebyshev.reset(); // built from the matrix it approximates
+          velocity_multigrid_is_current = false;
         }
       system_rhs = 0;
 

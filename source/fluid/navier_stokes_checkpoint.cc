@@ -90,6 +90,7 @@ namespace particulate {
     NavierStokes<dim>::reset_preconditioners()
     {
       velocity_amg.reset();
+      velocity_multigrid_is_current  = false;
       schur_approximation_is_current = false;
     }
 

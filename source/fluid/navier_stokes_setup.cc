@@ -119,6 +119,27 @@ namespace particulate {
            locally_relevant_dofs.get_view(dofs_per_block[0],
                                           dof_handler.n_dofs())};
 
+      velocity_multigrid.reset();
+      if (parameters.linear_solver.velocity_preconditioner
+          == "geometric multigrid")
+        {
+          const auto &bc = parameters.boundary_conditions;
+          typename VelocityMultigrid<dim>::Settings settings;
+          settings.dirichlet_ids = bc.no_slip;
+          settings.dirichlet_ids.insert(settings.dirichlet_ids.end(),
+                                        bc.dirichlet.begin(),
+                                        bc.dirichlet.end());
+          settings.free_slip_ids   = bc.free_slip;
+          settings.smoother_degree = parameters.linear_solver.chebyshev_degree;
+          velocity_multigrid
+            = std::make_unique<VelocityMultigrid<dim>>(dof_handler,
+                                                       owned_partitioning[0],
+                                                       mapping,
+                                                       settings,
+                                                       timer);
+        }
+      velocity_multigrid_is_current = false;
+
       make_constraints(0.);
       setup_matrices();
 
@@ -189,6 +210,14 @@ namespace particulate {
                   c.set_inhomogeneity(dof, value);
               }
           c.close();
+        }
+      if (velocity_multigrid)
+        {
+          std::vector<types::global_dof_index> masked;
+          masked.reserve(fictitious_boundary_values.size());
+          for (const auto &entry : fictitious_boundary_values)
+            masked.push_back(entry.first);
+          velocity_multigrid->set_masked_dofs(masked);
         }
 
       // cells whose velocity is prescribed everywhere (see
@@ -471,6 +500,11 @@ namespace particulate {
       mesh_velocity     = after;
       has_mesh_velocity = true;
       assemble_geometric_matrices();
+      if (velocity_multigrid)
+        {
+          velocity_multigrid->update_geometry();
+          velocity_multigrid_is_current = false;
+        }
     }
 
 
@@ -514,6 +548,8 @@ namespace particulate {
         bytes += velocity_amg->memory_consumption();
       if (laplace_amg)
         bytes += laplace_amg->memory_consumption();
+      if (velocity_multigrid)
+        bytes += velocity_multigrid->memory_consumption();
       for (const BlockVector *v : {&system_rhs,
                                    &newton_update,
                                    &solution,

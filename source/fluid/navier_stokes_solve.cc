@@ -258,6 +258,24 @@ namespace particulate {
 
 
 
+    template <int dim>
+    void
+    NavierStokes<dim>::linearise_velocity_multigrid(const Stage &stage)
+    {
+      TrilinosWrappers::MPI::Vector velocity(owned_partitioning[0],
+                                             communicator);
+      velocity          = solution.block(0);
+      const bool steady = stage.time_step == 0.;
+      velocity_multigrid->set_linearisation(
+        velocity,
+        steady ? 0. : parameters.properties.density / stage.time_step,
+        stage.theta_implicit,
+        *viscosity_model);
+      velocity_multigrid_is_current = true;
+    }
+
+
+
     /*
      * The velocity AMG hierarchy is kept across Newton iterations, stages and
      * time steps (its setup costs as much as a Krylov solve). A kept
@@ -274,7 +292,13 @@ namespace particulate {
       const bool use_chebyshev
         = parameters.linear_solver.velocity_preconditioner == "Chebyshev";
       bool fresh = false;
-      if (use_chebyshev)
+      if (velocity_multigrid)
+        {
+          if (!velocity_multigrid_is_current)
+            linearise_velocity_multigrid(stage);
+          fresh = true; // linearised at this very matrix
+        }
+      else if (use_chebyshev)
         {
           if (!velocity_chebyshev)
             build_velocity_chebyshev();
@@ -304,7 +328,9 @@ namespace particulate {
           const BlockTriangularPreconditioner::VelocityInverse velocity_inverse
             = [&](TrilinosWrappers::MPI::Vector       &dst,
                   const TrilinosWrappers::MPI::Vector &src) {
-                if (use_chebyshev)
+                if (velocity_multigrid)
+                  velocity_multigrid->vmult(dst, src);
+                else if (use_chebyshev)
                   velocity_chebyshev->chebyshev.vmult(dst, src);
                 else
                   velocity_amg->vmult(dst, src);
@@ -356,7 +382,7 @@ namespace particulate {
             }
           zero_constraints.distribute(newton_update);
           const unsigned int iterations = control.last_step();
-          if (use_chebyshev)
+          if (use_chebyshev || velocity_multigrid)
             return iterations;
           if (fresh)
             amg_reference_iterations = iterations;
@@ -529,6 +555,10 @@ namespace particulate {
       return total;
     }
 
+    template void
+    NavierStokes<2>::linearise_velocity_multigrid(const Stage &);
+    template void
+    NavierStokes<3>::linearise_velocity_multigrid(const Stage &);
     template unsigned int
     NavierStokes<2>::solve_linear(const Stage &, const double);
     template unsigned int

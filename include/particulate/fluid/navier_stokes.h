@@ -3,6 +3,7 @@
 
 #include <particulate/core/simulation_parameters.h>
 #include <particulate/fluid/fluid_parameters.h>
+#include <particulate/fluid/velocity_multigrid.h>
 #include <particulate/fluid/viscosity_model.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -272,6 +273,9 @@ namespace particulate {
       build_velocity_preconditioner();
       void
       build_velocity_chebyshev();
+      /** Hand the current iterate to the velocity multigrid. */
+      void
+      linearise_velocity_multigrid(const Stage &stage);
       unsigned int
       solve_linear(const Stage &stage, const double tolerance);
       void
@@ -335,6 +339,11 @@ namespace particulate {
       /// (the alternative to velocity_amg), rebuilt with every matrix
       struct VelocityChebyshev;
       std::shared_ptr<VelocityChebyshev> velocity_chebyshev;
+      /// geometric multigrid for the velocity block (the alternative to
+      /// velocity_amg and velocity_chebyshev), linearised at the iterate of
+      /// the last matrix assembly
+      std::unique_ptr<VelocityMultigrid<dim>> velocity_multigrid;
+      bool velocity_multigrid_is_current = false;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
     };

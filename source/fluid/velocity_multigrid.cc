@@ -1,0 +1,541 @@
+#include <particulate/fluid/velocity_multigrid.h>
+
+#include <deal.II/base/mg_level_object.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/manifold.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/matrix_free/tools.h>
+#include <deal.II/multigrid/mg_coarse.h>
+#include <deal.II/multigrid/mg_constrained_dofs.h>
+#include <deal.II/multigrid/mg_matrix.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/mg_tools.h>
+#include <deal.II/multigrid/mg_transfer_matrix_free.h>
+#include <deal.II/multigrid/multigrid.h>
+
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "mass_viscous_operator.h"
+
+namespace particulate {
+  namespace fluid {
+    using namespace dealii;
+
+    namespace {
+      using LevelVector = LinearAlgebra::distributed::Vector<float>;
+
+      /**
+       * The coarse level: its matrix (computed from the level operator's
+       * cell kernel) solved by conjugate gradients with one ML AMG cycle
+       * as the preconditioner, to a loose tolerance. The coarse mesh is
+       * the unrefined input mesh: small, so a few CG steps are cheap, and
+       * an accurate coarse solve keeps the V-cycle independent of how
+       * coarse that mesh is.
+       */
+      class CoarseSolver : public MGCoarseGridBase<LevelVector>
+      {
+      public:
+        TrilinosWrappers::SparseMatrix    matrix;
+        TrilinosWrappers::PreconditionAMG amg;
+        IndexSet                          owned;
+        MPI_Comm                          communicator = MPI_COMM_SELF;
+
+        void
+        operator()(const unsigned int,
+                   LevelVector       &dst,
+                   const LevelVector &src) const override
+        {
+          TrilinosWrappers::MPI::Vector b(owned, communicator),
+            x(owned, communicator);
+          for (unsigned int i = 0; i < src.locally_owned_size(); ++i)
+            b.begin()[i] = src.local_element(i);
+          SolverControl control(50, 1e-3 * b.l2_norm(), false, false);
+          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+          try
+            {
+              cg.solve(matrix, x, b, amg);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              // an inexact coarse solve still gives a usable V-cycle; the
+              // flexible outer solver judges convergence
+            }
+          for (unsigned int i = 0; i < dst.locally_owned_size(); ++i)
+            dst.local_element(i) = x.begin()[i];
+        }
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    struct VelocityMultigrid<dim>::Implementation
+    {
+      using FineVector    = LinearAlgebra::distributed::Vector<double>;
+      using LevelOperator = MassViscousOperator<dim, float>;
+      using Smoother      = PreconditionChebyshev<LevelOperator, LevelVector>;
+
+      Implementation(const DoFHandler<dim> &system_dofs,
+                     const IndexSet        &owned_velocity,
+                     const Mapping<dim>    &mapping,
+                     const Settings        &settings,
+                     TimerOutput           &timer);
+
+      void
+      distribute_dofs();
+      void
+      make_level_constraints();
+      void
+      build_levels();
+
+      const DoFHandler<dim> &system_dofs;
+      const IndexSet         owned_velocity;
+      const Mapping<dim>    &mapping;
+      const Settings         settings;
+      TimerOutput           &timer;
+      const MPI_Comm         communicator;
+
+      const FESystem<dim> fe;
+      DoFHandler<dim>     dofs;
+      unsigned int        finest_level = 0;
+      MGConstrainedDoFs   mg_constrained_dofs;
+      /// finest-level DoF of each locally owned velocity DoF (offset by
+      /// the first owned index; the owned range is contiguous)
+      std::vector<types::global_dof_index> active_to_level;
+      std::vector<types::global_dof_index> masked_active_dofs;
+
+      MGLevelObject<std::shared_ptr<const MatrixFree<dim, float>>> matrix_free;
+      MGLevelObject<LevelOperator>                                 operators;
+      AffineConstraints<float>         coarse_constraints;
+      MGTransferMatrixFree<dim, float> transfer;
+      MGSmootherPrecondition<LevelOperator, Smoother, LevelVector> smoother;
+      mg::Matrix<LevelVector>                                      mg_matrix;
+      CoarseSolver                                                 coarse;
+      std::unique_ptr<Multigrid<LevelVector>>                      multigrid;
+      std::unique_ptr<
+        PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>
+           preconditioner;
+      bool linearised = false;
+      /// the coefficients of the current hierarchy (c_m, theta_i)
+      double             current_mass = -1., current_theta = -1.;
+      mutable FineVector fine_src, fine_dst;
+    };
+
+
+
+    template <int dim>
+    VelocityMultigrid<dim>::Implementation::Implementation(
+      const DoFHandler<dim> &system_dofs,
+      const IndexSet        &owned_velocity,
+      const Mapping<dim>    &mapping,
+      const Settings        &settings,
+      TimerOutput           &timer)
+      : system_dofs(system_dofs)
+      , owned_velocity(owned_velocity)
+      , mapping(mapping)
+      , settings(settings)
+      , timer(timer)
+      , communicator(system_dofs.get_communicator())
+      , fe(FE_Q<dim>(2), dim)
+      , dofs(system_dofs.get_triangulation())
+    {
+      if (system_dofs.get_triangulation().has_hanging_nodes())
+        throw std::runtime_error(
+          "The geometric multigrid velocity preconditioner needs a "
+          "uniformly refined mesh (no hanging nodes). Use 'Velocity "
+          "preconditioner = AMG' in subsection 'Linear solver'.");
+      distribute_dofs();
+      make_level_constraints();
+      build_levels();
+      fine_src.reinit(owned_velocity, communicator);
+      fine_dst.reinit(owned_velocity, communicator);
+    }
+
+
+
+    /*
+     * The velocity DoF handler gets the numbers of the velocity block of
+     * the system: every locally owned velocity DoF is matched with its
+     * system DoF through a cell that holds both (same component, same
+     * index within the Q2 element). DoF ownership follows the cells in both
+     * handlers alike, so the locally owned sets coincide.
+     */
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::Implementation::distribute_dofs()
+    {
+      dofs.distribute_dofs(fe);
+      const FiniteElement<dim> &system_fe = system_dofs.get_fe();
+      std::vector<unsigned int> velocity_to_system(fe.n_dofs_per_cell());
+      for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+        for (unsigned int i = 0; i < system_fe.n_dofs_per_cell(); ++i)
+          if (system_fe.system_to_component_index(i)
+              == fe.system_to_component_index(j))
+            velocity_to_system[j] = i;
+
+      const IndexSet                       owned = dofs.locally_owned_dofs();
+      std::vector<types::global_dof_index> new_numbers(
+        owned.n_elements(),
+        numbers::invalid_dof_index);
+      std::vector<types::global_dof_index> system_indices(
+        system_fe.n_dofs_per_cell()),
+        velocity_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : system_dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const typename DoFHandler<dim>::active_cell_iterator velocity_cell(
+              &dofs.get_triangulation(),
+              cell->level(),
+              cell->index(),
+              &dofs);
+            cell->get_dof_indices(system_indices);
+            velocity_cell->get_dof_indices(velocity_indices);
+            for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+              if (owned.is_element(velocity_indices[j]))
+                new_numbers[owned.index_within_set(velocity_indices[j])]
+                  = system_indices[velocity_to_system[j]];
+          }
+      for (const auto n : new_numbers)
+        AssertThrow(n != numbers::invalid_dof_index
+                      && owned_velocity.is_element(n),
+                    ExcMessage("Velocity multigrid: the velocity DoFs are "
+                               "not owned alike in the two DoF handlers."));
+      dofs.renumber_dofs(new_numbers);
+      AssertThrow(dofs.locally_owned_dofs() == owned_velocity,
+                  ExcInternalError());
+      dofs.distribute_mg_dofs();
+      finest_level = dofs.get_triangulation().n_global_levels() - 1;
+
+      const types::global_dof_index first
+        = owned_velocity.n_elements() > 0 ? owned_velocity.nth_index_in_set(0) :
+                                            0;
+      active_to_level.assign(owned_velocity.n_elements(),
+                             numbers::invalid_dof_index);
+      std::vector<types::global_dof_index> level_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            AssertThrow(static_cast<unsigned int>(cell->level())
+                          == finest_level,
+                        ExcInternalError());
+            cell->get_dof_indices(velocity_indices);
+            cell->get_mg_dof_indices(level_indices);
+            for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+              if (owned_velocity.is_element(velocity_indices[j]))
+                active_to_level[velocity_indices[j] - first] = level_indices[j];
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::Implementation::make_level_constraints()
+    {
+      mg_constrained_dofs.initialize(dofs);
+      const std::set<types::boundary_id> dirichlet(
+        settings.dirichlet_ids.begin(),
+        settings.dirichlet_ids.end());
+      mg_constrained_dofs.make_zero_boundary_constraints(dofs, dirichlet);
+      for (const unsigned int id : settings.free_slip_ids)
+        {
+          // deal.II's level version of the no-normal-flux condition fixes
+          // one velocity component; it needs faces normal to an axis.
+          for (const auto &face :
+               dofs.get_triangulation().active_face_iterators())
+            if (face->at_boundary() && face->boundary_id() == id)
+              {
+                const Tensor<1, dim> normal
+                  = face->get_manifold().normal_vector(face, face->center());
+                double largest = 0.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  largest = std::max(largest, std::abs(normal[d]));
+                if (largest < (1. - 1e-10) * normal.norm())
+                  {
+                    std::ostringstream message;
+                    message << "The geometric multigrid velocity "
+                               "preconditioner supports free-slip boundaries "
+                               "only on planes normal to a coordinate axis; "
+                               "boundary id "
+                            << id
+                            << " is not. Use 'Velocity preconditioner = AMG' "
+                               "in subsection 'Linear solver'.";
+                    throw std::runtime_error(message.str());
+                  }
+              }
+          mg_constrained_dofs.make_no_normal_flux_constraints(dofs, id, 0);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::Implementation::build_levels()
+    {
+      matrix_free.resize(0, finest_level);
+      operators.resize(0, finest_level);
+      std::vector<std::shared_ptr<const Utilities::MPI::Partitioner>>
+        partitioners(finest_level + 1);
+      for (unsigned int level = 0; level <= finest_level; ++level)
+        {
+          const IndexSet relevant
+            = DoFTools::extract_locally_relevant_level_dofs(dofs, level);
+          AffineConstraints<float> constraints;
+          constraints.reinit(relevant);
+          constraints.add_lines(
+            mg_constrained_dofs.get_boundary_indices(level));
+          constraints.close();
+
+          typename MatrixFree<dim, float>::AdditionalData data;
+          data.tasks_parallel_scheme
+            = MatrixFree<dim, float>::AdditionalData::none;
+          data.mapping_update_flags
+            = update_values | update_gradients | update_JxW_values;
+          data.mg_level   = level;
+          auto level_data = std::make_shared<MatrixFree<dim, float>>();
+          level_data->reinit(mapping, dofs, constraints, QGauss<1>(3), data);
+          matrix_free[level] = level_data;
+          operators[level].initialize(level_data);
+          partitioners[level] = level_data->get_vector_partitioner();
+          if (level == 0)
+            coarse_constraints.copy_from(constraints);
+        }
+      transfer.clear();
+      transfer.initialize_constraints(mg_constrained_dofs);
+      transfer.build(dofs, partitioners);
+
+      // the coarse matrix's pattern
+      const IndexSet owned0 = dofs.locally_owned_mg_dofs(0);
+      const IndexSet relevant0
+        = DoFTools::extract_locally_relevant_level_dofs(dofs, 0);
+      TrilinosWrappers::SparsityPattern pattern(owned0,
+                                                owned0,
+                                                relevant0,
+                                                communicator);
+      MGTools::make_sparsity_pattern(dofs, pattern, 0);
+      pattern.compress();
+      coarse.matrix.reinit(pattern);
+      coarse.owned        = owned0;
+      coarse.communicator = communicator;
+
+      mg_matrix.initialize(operators);
+      multigrid      = std::make_unique<Multigrid<LevelVector>>(mg_matrix,
+                                                           coarse,
+                                                           transfer,
+                                                           smoother,
+                                                           smoother,
+                                                           0,
+                                                           finest_level);
+      preconditioner = std::make_unique<
+        PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>(
+        dofs,
+        *multigrid,
+        transfer);
+      linearised    = false;
+      current_mass  = -1.;
+      current_theta = -1.;
+    }
+
+
+
+    template <int dim>
+    VelocityMultigrid<dim>::VelocityMultigrid(
+      const DoFHandler<dim> &system_dofs,
+      const IndexSet        &owned_velocity,
+      const Mapping<dim>    &mapping,
+      const Settings        &settings,
+      TimerOutput           &timer)
+    {
+      TimerOutput::Scope scope(timer, "fluid: velocity multigrid setup");
+      implementation = std::make_unique<Implementation>(system_dofs,
+                                                        owned_velocity,
+                                                        mapping,
+                                                        settings,
+                                                        timer);
+    }
+
+
+
+    template <int dim>
+    VelocityMultigrid<dim>::~VelocityMultigrid() = default;
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::update_geometry()
+    {
+      TimerOutput::Scope scope(implementation->timer,
+                               "fluid: velocity multigrid setup");
+      implementation->build_levels();
+      set_masked_dofs(implementation->masked_active_dofs);
+    }
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::set_linearisation(
+      const TrilinosWrappers::MPI::Vector &velocity,
+      const double                         mass_coefficient,
+      const double                         theta_implicit,
+      const ViscosityModel                &viscosity_model)
+    {
+      auto &m = *implementation;
+      // With a constant viscosity the operator depends only on the stage
+      // (rho/k, theta_i): the hierarchy is kept while they stay.
+      const bool variable_mu = viscosity_model.depends_on_shear_rate();
+      if (m.linearised && !variable_mu && m.current_mass == mass_coefficient
+          && m.current_theta == theta_implicit)
+        return;
+      TimerOutput::Scope scope(m.timer, "fluid: velocity multigrid update");
+      MGLevelObject<LevelVector> level_velocity(0, m.finest_level);
+      if (variable_mu)
+        {
+          std::copy(velocity.begin(), velocity.end(), m.fine_src.begin());
+          m.transfer.interpolate_to_mg(m.dofs, level_velocity, m.fine_src);
+        }
+
+      using SmootherData = typename Implementation::Smoother::AdditionalData;
+      MGLevelObject<SmootherData> smoother_data(0, m.finest_level);
+      for (unsigned int level = 0; level <= m.finest_level; ++level)
+        {
+          m.operators[level].set_coefficients(level_velocity[level],
+                                              mass_coefficient,
+                                              theta_implicit,
+                                              viscosity_model);
+          auto &data  = smoother_data[level];
+          data.degree = m.settings.smoother_degree;
+          // Smooth the upper part of the spectrum; the coarse-grid
+          // correction takes care of the rest.
+          data.smoothing_range     = 15.;
+          data.eig_cg_n_iterations = 12;
+          data.preconditioner
+            = m.operators[level].get_matrix_diagonal_inverse();
+        }
+      m.smoother.initialize(m.operators, smoother_data);
+
+      m.coarse.matrix = 0.;
+      MatrixFreeTools::compute_matrix(
+        *m.matrix_free[0],
+        m.coarse_constraints,
+        m.coarse.matrix,
+        &Implementation::LevelOperator::cell_kernel,
+        &m.operators[0]);
+      TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+      // near-null space: one constant mode per velocity component
+      const IndexSet                &owned0 = m.coarse.owned;
+      std::vector<std::vector<bool>> constant_modes(
+        dim,
+        std::vector<bool>(owned0.n_elements(), false));
+      std::vector<types::global_dof_index> indices(m.fe.n_dofs_per_cell());
+      for (const auto &cell : m.dofs.mg_cell_iterators_on_level(0))
+        if (cell->is_locally_owned_on_level())
+          {
+            cell->get_mg_dof_indices(indices);
+            for (unsigned int j = 0; j < indices.size(); ++j)
+              if (owned0.is_element(indices[j]))
+                constant_modes[m.fe.system_to_component_index(j).first]
+                              [owned0.index_within_set(indices[j])]
+                  = true;
+          }
+      amg_data.constant_modes        = constant_modes;
+      amg_data.elliptic              = true;
+      amg_data.higher_order_elements = true;
+      amg_data.smoother_type         = "ILU";
+      amg_data.smoother_sweeps       = 2;
+      amg_data.aggregation_threshold = 0.02;
+      m.coarse.amg.initialize(m.coarse.matrix, amg_data);
+      m.linearised    = true;
+      m.current_mass  = mass_coefficient;
+      m.current_theta = theta_implicit;
+    }
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::set_masked_dofs(
+      const std::vector<types::global_dof_index> &dofs)
+    {
+      auto &m = *implementation;
+      m.masked_active_dofs.clear();
+      std::vector<types::global_dof_index> level_dofs;
+      const types::global_dof_index        first
+        = m.owned_velocity.n_elements() > 0 ?
+            m.owned_velocity.nth_index_in_set(0) :
+            0;
+      for (const auto dof : dofs)
+        if (m.owned_velocity.is_element(dof))
+          {
+            m.masked_active_dofs.push_back(dof);
+            level_dofs.push_back(m.active_to_level[dof - first]);
+          }
+      m.operators[m.finest_level].set_masked_dofs(level_dofs);
+    }
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::vmult(
+      TrilinosWrappers::MPI::Vector       &dst,
+      const TrilinosWrappers::MPI::Vector &src) const
+    {
+      auto &m = *implementation;
+      AssertThrow(m.linearised,
+                  ExcMessage("VelocityMultigrid::vmult before "
+                             "set_linearisation()"));
+      std::copy(src.begin(), src.end(), m.fine_src.begin());
+      const types::global_dof_index first
+        = m.owned_velocity.n_elements() > 0 ?
+            m.owned_velocity.nth_index_in_set(0) :
+            0;
+      for (const auto dof : m.masked_active_dofs)
+        m.fine_src.local_element(dof - first) = 0.;
+      m.preconditioner->vmult(m.fine_dst, m.fine_src);
+      for (const auto dof : m.masked_active_dofs)
+        m.fine_dst.local_element(dof - first) = 0.;
+      std::copy(m.fine_dst.begin(), m.fine_dst.end(), dst.begin());
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    VelocityMultigrid<dim>::n_levels() const
+    {
+      return implementation->finest_level + 1;
+    }
+
+
+
+    template <int dim>
+    std::size_t
+    VelocityMultigrid<dim>::memory_consumption() const
+    {
+      const auto &m     = *implementation;
+      std::size_t bytes = m.transfer.memory_consumption()
+                          + m.coarse.matrix.memory_consumption()
+                          + m.dofs.memory_consumption();
+      for (unsigned int level = 0; level <= m.finest_level; ++level)
+        bytes += m.operators[level].memory_consumption();
+      return bytes;
+    }
+
+    template class VelocityMultigrid<2>;
+    template class VelocityMultigrid<3>;
+  } // namespace fluid
+} // namespace particulate
