@@ -60,8 +60,10 @@ namespace particulate {
      * Incompressible Navier-Stokes solver with Q2/P1disc elements on a
      * parallel::fullydistributed::Triangulation, Trilinos block matrices,
      * Newton (with a fixed-point fallback) and FGMRES preconditioned by a
-     * block-triangular preconditioner: algebraic multigrid for the velocity
-     * block, and for the Schur complement the Cahouet-Chabard combination
+     * block-triangular preconditioner: for the velocity block algebraic
+     * multigrid, a Jacobi-Chebyshev polynomial or geometric multigrid
+     * (VelocityMultigrid), chosen in the .prm, and for the Schur complement
+     * the Cahouet-Chabard combination
      * theta_i mu M_p^{-1} + (rho/k) L_p^{-1} (pressure mass matrix for the
      * viscous limit, the discrete pressure Laplacian L_p = B diag(M_u)^{-1}
      * B^T for the small-time-step limit), which keeps iteration counts flat

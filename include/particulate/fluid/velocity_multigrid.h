@@ -56,8 +56,8 @@ namespace particulate {
 
       /**
        * @p system_dofs: the (velocity, pressure) DoF handler, numbered with
-       * the velocity block first; @p owned_velocity its locally owned
-       * velocity DoFs. Both must outlive this object.
+       * the velocity block first (it and @p mapping must outlive this
+       * object); @p owned_velocity its locally owned velocity DoFs.
        */
       VelocityMultigrid(const dealii::DoFHandler<dim> &system_dofs,
                         const dealii::IndexSet        &owned_velocity,
