@@ -24,22 +24,20 @@ namespace particulate {
       viscosity_per_point = false;
 
       // The two geometric diagonals, each from the kernel with one unit
-      // coefficient and the others zero.
-      // (compute_diagonal of deal.II 9.4 expects sized vectors)
-      data->initialize_dof_vector(mass_diagonal);
-      data->initialize_dof_vector(viscous_diagonal);
-      mass_coefficient   = 1.;
-      viscosity_constant = 0.;
-      MatrixFreeTools::compute_diagonal(*data,
-                                        mass_diagonal,
-                                        &MassViscousOperator::cell_kernel,
-                                        this);
-      mass_coefficient   = 0.;
-      viscosity_constant = 1.;
-      MatrixFreeTools::compute_diagonal(*data,
-                                        viscous_diagonal,
-                                        &MassViscousOperator::cell_kernel,
-                                        this);
+      // coefficient and the other zero (deal.II 9.4's compute_diagonal
+      // expects a sized vector).
+      const auto unit_diagonal =
+        [this](const Number mass, const Number viscous, VectorType &diagonal) {
+          mass_coefficient   = mass;
+          viscosity_constant = viscous;
+          data->initialize_dof_vector(diagonal);
+          MatrixFreeTools::compute_diagonal(*data,
+                                            diagonal,
+                                            &MassViscousOperator::cell_kernel,
+                                            this);
+        };
+      unit_diagonal(1., 0., mass_diagonal);
+      unit_diagonal(0., 1., viscous_diagonal);
       viscosity_constant = 0.;
       inverse_diagonal   = std::make_shared<DiagonalMatrix<VectorType>>();
       data->initialize_dof_vector(inverse_diagonal->get_vector());
@@ -194,31 +192,30 @@ namespace particulate {
     MassViscousOperator<dim, Number>::vmult_add(VectorType       &dst,
                                                 const VectorType &src) const
     {
-      // Masked rows and columns act as the identity: their source values
-      // take no part in the cell integrals.
-      std::vector<Number> kept(masked_rows.size());
-      auto               &source = const_cast<VectorType &>(src);
+      // Constrained and masked rows and columns act as the identity: the
+      // masked source values take no part in the cell integrals (the
+      // constrained ones are skipped by the matrix-free loop itself), and
+      // what the integrals add to those rows is replaced afterwards.
+      auto &source = const_cast<VectorType &>(src);
+      kept_source.resize(masked_rows.size());
       for (unsigned int i = 0; i < masked_rows.size(); ++i)
         {
-          kept[i] = source.local_element(masked_rows[i]);
+          kept_source[i] = source.local_element(masked_rows[i]);
           source.local_element(masked_rows[i]) = 0.;
         }
-      // the cell integrals add to dst; constrained and masked rows get
-      // nothing there and are set below
-      std::vector<Number> dst_kept(identity_rows.size() + masked_rows.size());
-      unsigned int        n = 0;
-      for (const unsigned int i : identity_rows)
-        dst_kept[n++] = dst.local_element(i);
-      for (const unsigned int i : masked_rows)
-        dst_kept[n++] = dst.local_element(i);
+      kept_destination.clear();
+      for (const auto *rows : {&identity_rows, &masked_rows})
+        for (const unsigned int i : *rows)
+          kept_destination.push_back(dst.local_element(i));
+
       data->cell_loop(&MassViscousOperator::local_apply, this, dst, src, false);
+
       for (unsigned int i = 0; i < masked_rows.size(); ++i)
-        source.local_element(masked_rows[i]) = kept[i];
-      n = 0;
-      for (const unsigned int i : identity_rows)
-        dst.local_element(i) = dst_kept[n++] + src.local_element(i);
-      for (const unsigned int i : masked_rows)
-        dst.local_element(i) = dst_kept[n++] + src.local_element(i);
+        source.local_element(masked_rows[i]) = kept_source[i];
+      unsigned int n = 0;
+      for (const auto *rows : {&identity_rows, &masked_rows})
+        for (const unsigned int i : *rows)
+          dst.local_element(i) = kept_destination[n++] + src.local_element(i);
     }
 
 
@@ -250,17 +247,6 @@ namespace particulate {
                                                  const VectorType &src) const
     {
       vmult_add(dst, src);
-    }
-
-
-
-    template <int dim, typename Number>
-    Number
-    MassViscousOperator<dim, Number>::el(const unsigned int row,
-                                         const unsigned int col) const
-    {
-      AssertThrow(row == col, ExcNotImplemented());
-      return Number(1.) / (*inverse_diagonal)(row, row);
     }
 
 

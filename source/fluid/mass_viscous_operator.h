@@ -108,13 +108,15 @@ namespace particulate {
       {
         return m();
       }
-      Number
-      el(const unsigned int row, const unsigned int col) const;
 
-      const dealii::MatrixFree<dim, Number> &
-      get_matrix_free() const
+      /** A diagonal entry. PreconditionChebyshev needs it to compile; it
+       *  would build its own Jacobi from it if no inverse diagonal were
+       *  given. */
+      Number
+      el(const unsigned int row, const unsigned int col) const
       {
-        return *data;
+        AssertThrow(row == col, dealii::ExcNotImplemented());
+        return Number(1.) / (*inverse_diagonal)(row, row);
       }
 
       std::size_t
@@ -146,6 +148,8 @@ namespace particulate {
       /// locally owned constrained or masked rows (local indices)
       std::vector<unsigned int> identity_rows;
       std::vector<unsigned int> masked_rows;
+      /// scratch of vmult_add (kept to spare an allocation per product)
+      mutable std::vector<Number> kept_source, kept_destination;
     };
   } // namespace fluid
 } // namespace particulate

@@ -48,23 +48,31 @@ namespace particulate {
       public:
         TrilinosWrappers::SparseMatrix    matrix;
         TrilinosWrappers::PreconditionAMG amg;
-        IndexSet                          owned;
-        MPI_Comm                          communicator = MPI_COMM_SELF;
+        /// near-null space of the coarse matrix for ML: one constant mode
+        /// per velocity component (locally owned rows)
+        std::vector<std::vector<bool>> constant_modes;
+
+        /** The coarse level's locally owned DoFs. */
+        void
+        reinit(const IndexSet &owned, const MPI_Comm communicator)
+        {
+          rhs.reinit(owned, communicator);
+          solution.reinit(owned, communicator);
+        }
 
         void
         operator()(const unsigned int,
                    LevelVector       &dst,
                    const LevelVector &src) const override
         {
-          TrilinosWrappers::MPI::Vector b(owned, communicator),
-            x(owned, communicator);
           for (unsigned int i = 0; i < src.locally_owned_size(); ++i)
-            b.begin()[i] = src.local_element(i);
-          SolverControl control(50, 1e-3 * b.l2_norm(), false, false);
+            rhs.begin()[i] = src.local_element(i);
+          solution = 0.;
+          SolverControl control(50, 1e-3 * rhs.l2_norm(), false, false);
           SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
           try
             {
-              cg.solve(matrix, x, b, amg);
+              cg.solve(matrix, solution, rhs, amg);
             }
           catch (const SolverControl::NoConvergence &)
             {
@@ -72,8 +80,11 @@ namespace particulate {
               // flexible outer solver judges convergence
             }
           for (unsigned int i = 0; i < dst.locally_owned_size(); ++i)
-            dst.local_element(i) = x.begin()[i];
+            dst.local_element(i) = solution.begin()[i];
         }
+
+      private:
+        mutable TrilinosWrappers::MPI::Vector rhs, solution;
       };
     } // namespace
 
@@ -361,8 +372,21 @@ namespace particulate {
       MGTools::make_sparsity_pattern(dofs, pattern, 0);
       pattern.compress();
       coarse.matrix.reinit(pattern);
-      coarse.owned        = owned0;
-      coarse.communicator = communicator;
+      coarse.reinit(owned0, communicator);
+      coarse.constant_modes.assign(dim,
+                                   std::vector<bool>(owned0.n_elements(),
+                                                     false));
+      std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dofs.mg_cell_iterators_on_level(0))
+        if (cell->is_locally_owned_on_level())
+          {
+            cell->get_mg_dof_indices(indices);
+            for (unsigned int j = 0; j < indices.size(); ++j)
+              if (owned0.is_element(indices[j]))
+                coarse.constant_modes[fe.system_to_component_index(j).first]
+                                     [owned0.index_within_set(indices[j])]
+                  = true;
+          }
 
       mg_matrix.initialize(operators);
       multigrid      = std::make_unique<Multigrid<LevelVector>>(mg_matrix,
@@ -469,23 +493,7 @@ namespace particulate {
         &Implementation::LevelOperator::cell_kernel,
         &m.operators[0]);
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-      // near-null space: one constant mode per velocity component
-      const IndexSet                &owned0 = m.coarse.owned;
-      std::vector<std::vector<bool>> constant_modes(
-        dim,
-        std::vector<bool>(owned0.n_elements(), false));
-      std::vector<types::global_dof_index> indices(m.fe.n_dofs_per_cell());
-      for (const auto &cell : m.dofs.mg_cell_iterators_on_level(0))
-        if (cell->is_locally_owned_on_level())
-          {
-            cell->get_mg_dof_indices(indices);
-            for (unsigned int j = 0; j < indices.size(); ++j)
-              if (owned0.is_element(indices[j]))
-                constant_modes[m.fe.system_to_component_index(j).first]
-                              [owned0.index_within_set(indices[j])]
-                  = true;
-          }
-      amg_data.constant_modes        = constant_modes;
+      amg_data.constant_modes        = m.coarse.constant_modes;
       amg_data.elliptic              = true;
       amg_data.higher_order_elements = true;
       amg_data.smoother_type         = "ILU";
@@ -543,15 +551,6 @@ namespace particulate {
       for (const auto dof : m.masked_active_dofs)
         m.fine_dst.local_element(dof - first) = 0.;
       std::copy(m.fine_dst.begin(), m.fine_dst.end(), dst.begin());
-    }
-
-
-
-    template <int dim>
-    unsigned int
-    VelocityMultigrid<dim>::n_levels() const
-    {
-      return implementation->finest_level + 1;
     }
 
 

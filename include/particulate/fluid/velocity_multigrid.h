@@ -94,9 +94,6 @@ namespace particulate {
       vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
             const dealii::TrilinosWrappers::MPI::Vector &src) const;
 
-      unsigned int
-      n_levels() const;
-
       /** Bytes held by this rank (operators, transfer, coarse matrix). */
       std::size_t
       memory_consumption() const;
