@@ -258,7 +258,10 @@ namespace particulate {
      * with those (deal.II 9.4) the ten Cate quarter box with the free-slip
      * plane x = 0 needed 189 FGMRES iterations per Newton step (with the
      * plane y = 0 instead: 7), with both planes 130-260; collected here, 7
-     * and 6. We did not find out which of the two calls goes wrong.
+     * and 6 (measured by switching back temporarily; the test
+     * fluid_multigrid_matches_amg fails with those helpers: 5.3 times AMG's
+     * iterations on its half channel). We did not find out which of the two
+     * calls goes wrong.
      */
     template <int dim>
     void
