@@ -269,8 +269,9 @@ namespace particulate {
       assemble(const Stage &stage,
                const bool   assemble_matrix,
                const bool   newton);
+      /** L_p and its AMG, M_p and its ILU; @p steady: for a steady solve. */
       void
-      build_schur_complement_approximation();
+      build_schur_complement_approximation(bool steady);
       void
       build_velocity_preconditioner();
       void
