@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -27,9 +28,13 @@ namespace particulate {
         "Type",
         "hyper rectangle",
         Patterns::Selection(
-          "hyper rectangle|graded rectangle|channel with cylinder|file"),
+          "hyper rectangle|graded rectangle|ball|channel with cylinder|file"),
         "Where the coarse mesh comes from. 'hyper rectangle': a box with "
         "boundary ids 0..2*dim-1 (x-min, x-max, y-min, y-max, z-min, z-max). "
+        "'ball': the ball inscribed in the box of 'Lower corner' and 'Upper "
+        "corner' (centred in it, radius half its shortest side; deal.II's "
+        "hyper_ball, 5 cells in 2D, 7 in 3D) with a curved boundary of id 0 "
+        "(e.g. a container around a particle). "
         "'channel with cylinder': the DFG benchmark channel (height and depth "
         "0.41 m, cylinder diameter 0.1 m, axis along z at y = 0.2 m) with "
         "boundary ids 0 inflow, 1 outflow, 2 cylinder, 3 walls. 'file': read "
@@ -111,6 +116,7 @@ namespace particulate {
       type                = t == "file"                  ? Type::file :
                             t == "channel with cylinder" ? Type::channel_with_cylinder :
                             t == "graded rectangle" ? Type::graded_rectangle :
+                            t == "ball"             ? Type::ball :
                                                       Type::hyper_rectangle;
       file_name           = prm.get("File name");
       refinements         = prm.get_integer("Refinements");
@@ -310,6 +316,28 @@ namespace particulate {
                 corner<dim>(p.lower_corner, "Lower corner"),
                 corner<dim>(p.upper_corner, "Upper corner"),
                 /*colorize=*/true);
+              break;
+            }
+          case MeshParameters::Type::ball:
+            {
+              const Point<dim> lower
+                = corner<dim>(p.lower_corner, "Lower corner");
+              const Point<dim> upper
+                = corner<dim>(p.upper_corner, "Upper corner");
+              double radius = std::numeric_limits<double>::max();
+              for (unsigned int d = 0; d < dim; ++d)
+                radius = std::min(radius, 0.5 * (upper[d] - lower[d]));
+              if (!(radius > 0.))
+                throw std::runtime_error(
+                  "subsection 'Mesh': a 'ball' lies inside the box of "
+                  "'Lower corner' and 'Upper corner'; every coordinate of "
+                  "'Upper corner' must exceed that of 'Lower corner'.");
+              GridGenerator::hyper_ball(
+                serial,
+                0.5 * (lower + upper),
+                radius,
+                /*attach_spherical_manifold_on_boundary_cells=*/
+                true);
               break;
             }
           case MeshParameters::Type::graded_rectangle:

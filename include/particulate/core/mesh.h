@@ -15,6 +15,7 @@ namespace particulate {
       enum class Type
       {
         hyper_rectangle,
+        ball,
         graded_rectangle,
         channel_with_cylinder,
         file
