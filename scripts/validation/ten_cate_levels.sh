@@ -4,6 +4,8 @@
 # ranks, then compare them with the experiment (scripts/validation/ten_cate.py,
 # figures into doc/validation/).
 #   scripts/validation/ten_cate_levels.sh e4 0 1
+# COVERED_NODES=nearest runs them with 'Covered nodes = nearest' (subsection
+# Particles) into output/ten-cate-<case>-r<level>-nearest/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 case_name="$1"; shift
@@ -12,12 +14,16 @@ base="prm/ten-cate/ten-cate-${case_name}.prm"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 folders=(); labels=()
 for level in "$@"; do
-  out="output/ten-cate-${case_name}-r${level}"
+  out="output/ten-cate-${case_name}-r${level}${COVERED_NODES:+-$COVERED_NODES}"
   mkdir -p "$out"
   # the case file with another 'Refinements' and output folder
   sed -e "s/^\( *set Refinements *=\).*/\1 ${level}/" \
       -e "s#^\( *set Directory *=\).*#\1 ${out}#" "$base" > "$out/case.prm"
+  if [[ -n "${COVERED_NODES:-}" ]]; then
+    printf 'subsection Particles\n  set Covered nodes = %s\nend\n' \
+      "$COVERED_NODES" >> "$out/case.prm"
+  fi
   mpirun -np 2 build/particulate "$out/case.prm" | tee "$out/run.log" || true
-  folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D")
+  folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}")
 done
 /usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}"

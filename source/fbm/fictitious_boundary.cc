@@ -3,7 +3,9 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <algorithm>
 #include <iterator>
@@ -13,6 +15,14 @@
 namespace particulate {
   namespace fbm {
     using namespace dealii;
+
+    namespace {
+      const char *const engine_marks_inside_only
+        = "fbm::FictitiousBoundary: the cuda/ containment engine marks the "
+          "nodes inside the bodies only ('Covered nodes = inside' in "
+          "subsection 'Particles'); use 'Containment backend = cpu' for "
+          "'nearest'.";
+    } // namespace
 
     template <int dim>
     FictitiousBoundary<dim>::FictitiousBoundary(
@@ -29,8 +39,24 @@ namespace particulate {
 
     template <int dim>
     void
+    FictitiousBoundary<dim>::set_marking(const Marking m)
+    {
+      if (engine && m != Marking::inside)
+        throw std::invalid_argument(engine_marks_inside_only);
+      const bool needs_spacing = m == Marking::nearest && marking != m;
+      marking                  = m;
+      if (needs_spacing && !positions.empty())
+        make_half_spacing_consistent();
+    }
+
+
+
+    template <int dim>
+    void
     FictitiousBoundary<dim>::use_containment_engine(const cuda::Backend backend)
     {
+      if (marking != Marking::inside)
+        throw std::invalid_argument(engine_marks_inside_only);
       engine = std::make_unique<cuda::ContainmentEngine>(backend);
       engine_shapes.clear();
     }
@@ -74,6 +100,7 @@ namespace particulate {
       node_dofs.clear();
       cells.clear();
       nodes_of_cells.clear();
+      half_spacing.clear();
       std::unordered_map<DofIndex, unsigned int> node_of_dof;
       std::vector<DofIndex> dof_indices(fe.n_dofs_per_cell());
       for (const auto &cell : flow.get_dof_handler().active_cell_iterators())
@@ -82,6 +109,9 @@ namespace particulate {
             fe_values.reinit(cell);
             cell->get_dof_indices(dof_indices);
             const bool owned = cell->is_locally_owned();
+            // Q2 nodes lie half an edge apart; half of that spacing
+            const double half_node_spacing
+              = 0.25 * cell->minimum_vertex_distance();
             if (owned)
               cells.push_back(cell);
             for (unsigned int k = 0; k < nodes_per_cell_; ++k)
@@ -100,17 +130,55 @@ namespace particulate {
                     for (unsigned int c = 0; c < dim; ++c)
                       dofs[c] = dof_indices[local_index[k][c]];
                     node_dofs.push_back(dofs);
+                    half_spacing.push_back(half_node_spacing);
                   }
+                else
+                  half_spacing[it->second]
+                    = std::min(half_spacing[it->second], half_node_spacing);
                 if (owned)
                   nodes_of_cells.push_back(it->second);
               }
           }
+      if (marking == Marking::nearest)
+        make_half_spacing_consistent();
       grid = std::make_unique<geometry::PointHashGrid>(positions);
       node_body.assign(positions.size(), -1);
       positions_float.resize(3 * positions.size());
       for (std::size_t i = 0; i < positions.size(); ++i)
         for (unsigned int d = 0; d < 3; ++d)
           positions_float[3 * i + d] = float(positions[i][d]);
+    }
+
+
+
+    template <int dim>
+    void
+    FictitiousBoundary<dim>::make_half_spacing_consistent()
+    {
+      // A node's spacing is the minimum over the cells around it. The rank
+      // owning its DoFs owns one of those cells and has all the others as
+      // ghosts, so its value is complete; a node at the edge of another
+      // rank's ghost layer may miss cells there. Take the owner's value
+      // everywhere, so that every rank marks shared nodes alike.
+      const DoFHandler<dim> &dof_handler = flow.get_dof_handler();
+      const IndexSet        &owned       = dof_handler.locally_owned_dofs();
+      IndexSet               relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      const MPI_Comm                comm = flow.get_communicator();
+      TrilinosWrappers::MPI::Vector owned_spacing(owned, comm);
+      for (unsigned int i = 0; i < positions.size(); ++i)
+        if (owned.is_element(node_dofs[i][0]))
+          owned_spacing[node_dofs[i][0]] = half_spacing[i];
+      owned_spacing.compress(VectorOperation::insert);
+      TrilinosWrappers::MPI::Vector spacing(owned, relevant, comm);
+      spacing              = owned_spacing;
+      largest_half_spacing = 0.;
+      for (unsigned int i = 0; i < positions.size(); ++i)
+        {
+          half_spacing[i] = spacing[node_dofs[i][0]];
+          largest_half_spacing
+            = std::max(largest_half_spacing, half_spacing[i]);
+        }
     }
 
 
@@ -128,9 +196,11 @@ namespace particulate {
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           const rigid::RigidBody &body = *bodies[b].body;
-          // the ball of the body, slightly enlarged against rounding; in 2D
-          // the nodes lie in the plane z = 0
-          const double          r = bodies[b].radius * (1. + 1e-9) + 1e-14;
+          // the ball of the body, enlarged by the marking's reach and
+          // slightly against rounding; in 2D the nodes lie in the plane z = 0
+          const double reach
+            = marking == Marking::nearest ? largest_half_spacing : 0.;
+          const double r = (bodies[b].radius + reach) * (1. + 1e-9) + 1e-14;
           geometry::BoundingBox box;
           box.lower = body.position - Eigen::Vector3d::Constant(r);
           box.upper = body.position + Eigen::Vector3d::Constant(r);
@@ -140,7 +210,10 @@ namespace particulate {
               box.upper[2] = r;
             }
           grid->for_each_in_box(box, [&](const std::size_t i) {
-            if (node_body[i] < 0 && body.signed_distance(positions[i]) <= 0.)
+            const double tolerance
+              = marking == Marking::nearest ? half_spacing[i] : 0.;
+            if (node_body[i] < 0
+                && body.signed_distance(positions[i]) <= tolerance)
               node_body[i] = b;
           });
         }

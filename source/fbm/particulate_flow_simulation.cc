@@ -288,9 +288,15 @@ namespace particulate {
         }
 
       FictitiousBoundary<dim> interface(flow);
+      interface.set_marking(particle_p.covered_nodes_nearest ?
+                              FictitiousBoundary<dim>::Marking::nearest :
+                              FictitiousBoundary<dim>::Marking::inside);
       interface.setup();
+      // the engine marks the nodes inside only: 'auto' keeps the hash grid
+      // for 'Covered nodes = nearest' (checked for 'cuda' when parsing)
       if (particle_p.containment_backend == "cuda"
           || (particle_p.containment_backend == "auto"
+              && !particle_p.covered_nodes_nearest
               && cuda::ContainmentEngine::cuda_device_available()))
         interface.use_containment_engine(cuda::Backend::cuda);
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;

@@ -44,8 +44,24 @@ namespace particulate {
         double radius = 0.;
       };
 
+      /** Which nodes take a body's rigid velocity. */
+      enum class Marking
+      {
+        /// signed distance <= 0 (thesis eq. 5.9): the flow sees the body
+        /// shrunk to its innermost nodes, on average by half a node spacing
+        inside,
+        /// signed distance <= half the local node spacing: the surface
+        /// rounded to the nearest node; the body seen enlarged instead
+        nearest
+      };
+
       explicit FictitiousBoundary(const fluid::NavierStokes<dim> &flow);
       ~FictitiousBoundary();
+
+      /** Choose the marking (Marking::inside until called). The cuda/
+       *  engine supports Marking::inside only. */
+      void
+      set_marking(Marking m);
 
       /**
        * Let classify() use the cuda/ library's ContainmentEngine on
@@ -68,8 +84,9 @@ namespace particulate {
       setup();
 
       /**
-       * Mark every node by the first body that contains it (signed distance
-       * <= 0), or -1.
+       * Mark every node by the first body that covers it (signed distance
+       * <= 0, or <= half the local node spacing with Marking::nearest), or
+       * -1.
        */
       void
       classify(const std::vector<Body> &bodies);
@@ -135,6 +152,12 @@ namespace particulate {
       std::vector<std::array<DofIndex, 3>>     node_dofs;
       std::unique_ptr<geometry::PointHashGrid> grid;
       std::vector<int>                         node_body;
+      Marking                                  marking = Marking::inside;
+      /// Marking::nearest: per node half the local node spacing (a quarter of
+      /// the shortest cell edge around it, the same on every rank), and its
+      /// maximum
+      std::vector<double> half_spacing;
+      double              largest_half_spacing = 0.;
       /// the engine path: its engine, the node positions as floats, one
       /// uploaded sphere shape per radius
       std::unique_ptr<cuda::ContainmentEngine> engine;
@@ -143,6 +166,8 @@ namespace particulate {
 
       void
       classify_with_engine(const std::vector<Body> &bodies);
+      void
+      make_half_spacing_consistent();
       std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> cells;
       std::vector<unsigned int> nodes_of_cells;
       unsigned int              nodes_per_cell_ = 0;

@@ -1,0 +1,65 @@
+// Creeping flow past a sphere at the centre of a spherical container
+// (prm/sphere-in-container): the drag from the fictitious boundary method
+// against the closed form F = 6 pi mu a U K(a/b) of Happel & Brenner (§4-22).
+// In 3D the drag grows with the sphere's radius, so how the marked nodes
+// describe the surface shows directly:
+//  - 'Covered nodes = inside' marks only nodes inside the sphere: the flow
+//    sees a smaller body and the drag must come out too low;
+//  - 'nearest' also marks the nodes less than half a node spacing outside:
+//    the flow sees a larger body and the drag must come out too high.
+// The closed form must lie between the two (doc/fbm.md, "Which nodes").
+// Usage: fbm_sphere_in_container [refinements]
+
+#include <particulate/fbm/particulate_flow_simulation.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "../fluid/test_utilities.h"
+
+using namespace particulate;
+
+namespace {
+  double
+  drag(const unsigned int refinements, const std::string &marking)
+  {
+    auto parameters = fbm::read_particulate_flow_case(
+      testing::source_path("prm/sphere-in-container/sphere-in-container.prm"),
+      "subsection Mesh\n set Refinements = " + std::to_string(refinements)
+        + "\nend\nsubsection Particles\n set Covered nodes = " + marking
+        + "\nend\n");
+    parameters.flow.output.directory = "fbm_sphere_in_container_output";
+    parameters.flow.output.write_vtu = false;
+    std::filesystem::create_directories(parameters.flow.output.directory);
+    fbm::ParticulateFlowSimulation<3> simulation(parameters,
+                                                 "sphere-in-container.prm",
+                                                 MPI_COMM_WORLD);
+    return -simulation.run().force[0][2];
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  testing::Checker                         checker;
+  const unsigned int refinements = argc > 1 ? std::atoi(argv[1]) : 2;
+
+  const double a = 0.25, b = 1., mu = 1., U = 1., l = a / b;
+  const double K = (1. - std::pow(l, 5))
+                   / (1. - 2.25 * l + 2.5 * std::pow(l, 3)
+                      - 2.25 * std::pow(l, 5) + std::pow(l, 6));
+  const double exact = 6. * M_PI * mu * a * U * K;
+
+  const double inside  = drag(refinements, "inside");
+  const double nearest = drag(refinements, "nearest");
+  std::cout << "level " << refinements << ": closed form " << exact
+            << " N, inside " << inside << " N (" << 100. * (inside / exact - 1.)
+            << " %), nearest " << nearest << " N ("
+            << 100. * (nearest / exact - 1.) << " %), mean of the two "
+            << 100. * (0.5 * (inside + nearest) / exact - 1.) << " %"
+            << std::endl;
+  checker.check(inside < exact, "'inside' (a smaller body): drag too low");
+  checker.check(nearest > exact, "'nearest' (a larger body): drag too high");
+  return checker.exit_code();
+}
