@@ -3,9 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <algorithm>
 #include <iterator>
@@ -160,22 +158,18 @@ namespace particulate {
       // ghosts, so its value is complete; a node at the edge of another
       // rank's ghost layer may miss cells there. Take the owner's value
       // everywhere, so that every rank marks shared nodes alike.
-      const DoFHandler<dim> &dof_handler = flow.get_dof_handler();
-      const IndexSet        &owned       = dof_handler.locally_owned_dofs();
-      IndexSet               relevant;
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      const MPI_Comm                comm = flow.get_communicator();
-      TrilinosWrappers::MPI::Vector owned_spacing(owned, comm);
+      const IndexSet &owned = flow.get_dof_handler().locally_owned_dofs();
+      auto            owned_spacing = flow.make_owned_vector();
       for (unsigned int i = 0; i < positions.size(); ++i)
         if (owned.is_element(node_dofs[i][0]))
-          owned_spacing[node_dofs[i][0]] = half_spacing[i];
+          owned_spacing(node_dofs[i][0]) = half_spacing[i];
       owned_spacing.compress(VectorOperation::insert);
-      TrilinosWrappers::MPI::Vector spacing(owned, relevant, comm);
+      auto spacing         = flow.make_ghosted_vector();
       spacing              = owned_spacing;
       largest_half_spacing = 0.;
       for (unsigned int i = 0; i < positions.size(); ++i)
         {
-          half_spacing[i] = spacing[node_dofs[i][0]];
+          half_spacing[i] = spacing(node_dofs[i][0]);
           largest_half_spacing
             = std::max(largest_half_spacing, half_spacing[i]);
         }
