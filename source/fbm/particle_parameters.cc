@@ -228,8 +228,7 @@ namespace particulate {
         "enlarged by up to that. The two bracket the body: creeping flow "
         "past a sphere at 2.7 cells per diameter gives drags 7.7 % below "
         "(inside) and 7.3 % above (nearest) the closed form (doc/fbm.md, "
-        "'Which nodes'). nearest is experimental: it can make the "
-        "pressure preconditioner singular next to the body (same page). The "
+        "'Which nodes'). The "
         "cuda containment backend supports 'inside' only.");
       prm.leave_subsection();
     }

@@ -4,6 +4,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
@@ -281,6 +282,22 @@ namespace particulate {
               }
 
             cell->get_dof_indices(dof_indices);
+            // undetermined pressure modes (see decoupled_pressure_dofs)
+            // leave the equations: no row, no column
+            for (unsigned int k = 0; k < n_p; ++k)
+              if (std::binary_search(decoupled_pressure_dofs.begin(),
+                                     decoupled_pressure_dofs.end(),
+                                     dof_indices[pressure_index[k]]))
+                {
+                  const unsigned int row = pressure_index[k];
+                  cell_rhs(row)          = 0.;
+                  if (assemble_matrix)
+                    for (unsigned int i = 0; i < cell_matrix.m(); ++i)
+                      {
+                        cell_matrix(row, i) = 0.;
+                        cell_matrix(i, row) = 0.;
+                      }
+                }
             if (assemble_matrix)
               zero_constraints.distribute_local_to_global(cell_matrix,
                                                           cell_rhs,
@@ -301,31 +318,53 @@ namespace particulate {
 
     namespace {
       /**
-       * Pressures of cells whose velocity nodes are all constrained (cells
-       * inside a fictitious-boundary body) have empty rows in B, hence in
-       * L_p = B D^{-1} B^T. They are decoupled from the flow and the solver
-       * keeps them at zero; a diagonal entry of the size of the others keeps
-       * the multigrid hierarchy of L_p well defined. Returns the lowest
-       * row (over all ranks) that was not empty: a pressure of the flow.
+       * Decoupled pressures (see NavierStokes::decoupled_pressure_dofs) have
+       * empty rows in B, hence in L_p = B D^{-1} B^T: the product does not
+       * even store their diagonal. The solver keeps them at zero; a unit
+       * row of the size of the others' diagonal keeps the multigrid
+       * hierarchy of L_p, and its direct coarse solve, well defined. Returns
+       * the product with those diagonals added, and in `first_flow_row` the
+       * lowest row (over all ranks) that was not empty: a pressure of the
+       * flow.
        */
-      types::global_dof_index
-      regularise_empty_pressure_rows(TrilinosWrappers::SparseMatrix &matrix)
+      void
+      regularise_empty_pressure_rows(TrilinosWrappers::SparseMatrix &matrix,
+                                     types::global_dof_index &first_flow_row)
       {
-        const IndexSet &owned   = matrix.locally_owned_range_indices();
-        double          largest = 0.;
+        const IndexSet &owned        = matrix.locally_owned_range_indices();
+        const MPI_Comm  communicator = matrix.get_mpi_communicator();
+        double          largest      = 0.;
         for (const auto row : owned)
           largest = std::max(largest, std::abs(matrix.diag_element(row)));
-        largest = Utilities::MPI::max(largest, matrix.get_mpi_communicator());
-        types::global_dof_index first_flow_row = numbers::invalid_dof_index;
+        largest = Utilities::MPI::max(largest, communicator);
+
+        TrilinosWrappers::SparsityPattern
+          pattern(owned, matrix.locally_owned_domain_indices(), communicator);
+        first_flow_row = numbers::invalid_dof_index;
         for (const auto row : owned)
-          if (std::abs(matrix.diag_element(row)) <= 1e-12 * largest)
-            matrix.set(row, row, largest);
-          else
-            first_flow_row
-              = std::min<types::global_dof_index>(first_flow_row, row);
-        matrix.compress(VectorOperation::insert);
-        return Utilities::MPI::min(first_flow_row,
-                                   matrix.get_mpi_communicator());
+          {
+            pattern.add(row, row);
+            for (auto entry = matrix.begin(row); entry != matrix.end(row);
+                 ++entry)
+              pattern.add(row, entry->column());
+            if (std::abs(matrix.diag_element(row)) > 1e-12 * largest)
+              first_flow_row
+                = std::min<types::global_dof_index>(first_flow_row, row);
+          }
+        pattern.compress();
+        first_flow_row = Utilities::MPI::min(first_flow_row, communicator);
+
+        TrilinosWrappers::SparseMatrix completed(pattern);
+        for (const auto row : owned)
+          {
+            for (auto entry = matrix.begin(row); entry != matrix.end(row);
+                 ++entry)
+              completed.set(row, entry->column(), entry->value());
+            if (std::abs(matrix.diag_element(row)) <= 1e-12 * largest)
+              completed.set(row, row, largest);
+          }
+        completed.compress(VectorOperation::insert);
+        matrix.copy_from(completed);
       }
     } // namespace
 
@@ -333,7 +372,7 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::build_schur_complement_approximation(const bool steady)
+    NavierStokes<dim>::build_schur_complement_approximation()
     {
       TimerOutput::Scope scope(timer, "fluid: Schur approximation");
       // L_p = B diag(M_u)^{-1} B^T from the divergence blocks of the current
@@ -342,8 +381,8 @@ namespace particulate {
       system_matrix.block(1, 0).mmult(pressure_laplacian,
                                       system_matrix.block(0, 1),
                                       inverse_lumped_mass);
-      const types::global_dof_index flow_row
-        = regularise_empty_pressure_rows(pressure_laplacian);
+      types::global_dof_index flow_row;
+      regularise_empty_pressure_rows(pressure_laplacian, flow_row);
       if (!parameters.boundary_conditions.pressure_is_determined())
         {
           // Enclosed flow: L_p is singular (constant pressures). Pinning one
@@ -373,16 +412,6 @@ namespace particulate {
       amg_data.higher_order_elements = false;
       amg_data.smoother_sweeps       = 2;
       amg_data.aggregation_threshold = 0.02;
-      if (steady && !parameters.boundary_conditions.pressure_is_determined()
-          && Utilities::MPI::logical_or(!fictitious_boundary_values.empty(),
-                                        communicator))
-        // Steady flow round bodies in a closed container: next to a body,
-        // cells with more pressure DoFs than free velocity DoFs add null
-        // vectors to L_p that no single pinned value removes, and the direct
-        // coarse solve of ML fails on them (prm/sphere-in-container);
-        // smoothing sweeps do not. (Time-dependent runs keep the direct
-        // solve, with which the enclosed sedimentation cases were measured.)
-        amg_data.coarse_type = "symmetric Gauss-Seidel";
       laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       laplace_amg->initialize(pressure_laplacian, amg_data);
 
@@ -396,8 +425,8 @@ namespace particulate {
     template void
     NavierStokes<3>::assemble(const Stage &, const bool, const bool);
     template void
-    NavierStokes<2>::build_schur_complement_approximation(const bool);
+    NavierStokes<2>::build_schur_complement_approximation();
     template void
-    NavierStokes<3>::build_schur_complement_approximation(const bool);
+    NavierStokes<3>::build_schur_complement_approximation();
   } // namespace fluid
 } // namespace particulate

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <set>
 
+#include "undetermined_pressures.h"
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
@@ -211,37 +213,18 @@ namespace particulate {
               }
           c.close();
         }
+      std::vector<types::global_dof_index> prescribed;
+      prescribed.reserve(fictitious_boundary_values.size());
+      for (const auto &entry : fictitious_boundary_values)
+        prescribed.push_back(entry.first);
+      std::sort(prescribed.begin(), prescribed.end());
       if (velocity_multigrid)
-        {
-          std::vector<types::global_dof_index> masked;
-          masked.reserve(fictitious_boundary_values.size());
-          for (const auto &entry : fictitious_boundary_values)
-            masked.push_back(entry.first);
-          velocity_multigrid->set_masked_dofs(masked);
-        }
-
-      // cells whose velocity is prescribed everywhere (see
-      // decoupled_pressure_dofs)
-      decoupled_pressure_dofs.clear();
-      if (!fictitious_boundary_values.empty())
-        {
-          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned())
-              {
-                cell->get_dof_indices(dofs);
-                bool all_constrained = true;
-                for (unsigned int i = 0;
-                     i < fe.n_dofs_per_cell() && all_constrained;
-                     ++i)
-                  if (fe.system_to_component_index(i).first < dim)
-                    all_constrained = zero_constraints.is_constrained(dofs[i]);
-                if (all_constrained)
-                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                    if (fe.system_to_component_index(i).first == dim)
-                      decoupled_pressure_dofs.push_back(dofs[i]);
-              }
-        }
+        velocity_multigrid->set_masked_dofs(prescribed);
+      decoupled_pressure_dofs
+        = find_undetermined_pressure_dofs(dof_handler,
+                                          mapping,
+                                          zero_constraints,
+                                          prescribed);
     }
 
 

@@ -288,7 +288,7 @@ namespace particulate {
     NavierStokes<dim>::solve_linear(const Stage &stage, const double tolerance)
     {
       if (!schur_approximation_is_current)
-        build_schur_complement_approximation(stage.time_step == 0.);
+        build_schur_complement_approximation();
       const bool use_chebyshev
         = parameters.linear_solver.velocity_preconditioner == "Chebyshev";
       bool fresh = false;

@@ -269,9 +269,9 @@ namespace particulate {
       assemble(const Stage &stage,
                const bool   assemble_matrix,
                const bool   newton);
-      /** L_p and its AMG, M_p and its ILU; @p steady: for a steady solve. */
+      /** L_p and its AMG, M_p and its ILU. */
       void
-      build_schur_complement_approximation(bool steady);
+      build_schur_complement_approximation();
       void
       build_velocity_preconditioner();
       void
@@ -308,12 +308,12 @@ namespace particulate {
       /// velocity values imposed inside fictitious-boundary bodies
       std::vector<std::pair<dealii::types::global_dof_index, double>>
         fictitious_boundary_values;
-      /// Pressure DoFs (locally owned) of cells whose velocity DoFs are all
-      /// constrained (inside a fictitious-boundary body, or squeezed between
-      /// a body and a wall): every test function they couple to is
-      /// constrained, so no equation determines them, and with prescribed
-      /// velocities all round the cell's divergence equation would contradict
-      /// them. They are decoupled: kept at zero after every Newton update.
+      /// Pressure DoFs (locally owned, sorted) that no equation determines:
+      /// all those of a cell whose velocities are all constrained (inside a
+      /// body), and one per null mode of a cell next to a body whose free
+      /// velocities do not see every pressure mode (see
+      /// find_undetermined_pressure_dofs). They are decoupled: no row or
+      /// column in the system, and kept at zero after every Newton update.
       std::vector<dealii::types::global_dof_index> decoupled_pressure_dofs;
 
       dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
