@@ -5,7 +5,8 @@
 # figures into doc/validation/).
 #   scripts/validation/ten_cate_levels.sh e4 0 1
 # COVERED_NODES=nearest runs them with 'Covered nodes = nearest' (subsection
-# Particles) into output/ten-cate-<case>-r<level>-nearest/.
+# Particles) into output/ten-cate-<case>-r<level>-nearest/. FIGURES=<dir>
+# puts the figures and table there instead of doc/validation.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 case_name="$1"; shift
@@ -26,4 +27,5 @@ for level in "$@"; do
   mpirun -np 2 build/particulate "$out/case.prm" | tee "$out/run.log" || true
   folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}")
 done
-/usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}"
+/usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}" \
+  --doc "${FIGURES:-doc/validation}"
