@@ -399,15 +399,34 @@ namespace particulate {
         }
 
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-      // The near-null space of L_p is the piecewise constant pressure, i.e.
-      // only the first (constant) FE_DGP shape function of each cell, not
-      // the vector of all ones that ML assumes by default.
-      std::vector<std::vector<bool>> constant_modes;
-      DoFTools::extract_constant_modes(dof_handler,
-                                       fe.component_mask(
-                                         FEValuesExtractors::Scalar(dim)),
-                                       constant_modes);
-      amg_data.constant_modes        = constant_modes;
+      // Near-null space for ML: one 0/1 vector per P1disc mode (the
+      // constant, and each linear one), marking that mode's DoF in every
+      // cell. The constant vector alone, the actual near-null space of L_p,
+      // fails where a cut cell's constant mode is decoupled (see
+      // decoupled_pressure_dofs): an aggregate of only linear-mode DoFs
+      // then has a zero null space, its tentative prolongator is singular,
+      // and the V-cycle returns NaN (ten Cate E4 full box, nearest marking,
+      // t = 0.445 s). With all modes every aggregate has a basis; the
+      // iteration counts did not change there.
+      const IndexSet                &owned_pressures = owned_partitioning[1];
+      std::vector<std::vector<bool>> pressure_modes(
+        dim + 1,
+        std::vector<bool>(owned_pressures.n_elements(), false));
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dof_indices.size(); ++i)
+              {
+                const auto [component, mode] = fe.system_to_component_index(i);
+                if (component == dim)
+                  pressure_modes[mode][owned_pressures.index_within_set(
+                    dof_indices[i] - dofs_per_block[0])]
+                    = true;
+              }
+          }
+      amg_data.constant_modes        = pressure_modes;
       amg_data.elliptic              = true;
       amg_data.higher_order_elements = false;
       amg_data.smoother_sweeps       = 2;

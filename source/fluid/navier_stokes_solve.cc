@@ -171,6 +171,45 @@ namespace particulate {
 
 
     namespace {
+      /**
+       * After FGMRES produced NaN or Inf: which ingredient did, so that the
+       * message can say where to look (each part is applied to the
+       * right-hand side once).
+       */
+      std::string
+      locate_non_finite(
+        const TrilinosWrappers::BlockSparseMatrix            &matrix,
+        const TrilinosWrappers::MPI::BlockVector             &rhs,
+        const BlockTriangularPreconditioner::VelocityInverse &velocity,
+        const TrilinosWrappers::PreconditionILU              &mass,
+        const PressurePoissonSolver                          &laplace)
+      {
+        const auto finite = [](const TrilinosWrappers::MPI::Vector &v) {
+          return std::isfinite(v.l2_norm());
+        };
+        if (!std::isfinite(rhs.l2_norm()))
+          return "The right-hand side is not finite.";
+        if (!std::isfinite(matrix.frobenius_norm()))
+          return "The system matrix is not finite.";
+        TrilinosWrappers::MPI::Vector u(rhs.block(0)), p(rhs.block(1));
+        velocity(u, rhs.block(0));
+        if (!finite(u))
+          return "The velocity preconditioner returned NaN/Inf.";
+        mass.vmult(p, rhs.block(1));
+        if (!finite(p))
+          return "The pressure mass ILU returned NaN/Inf.";
+        laplace.solve(p, rhs.block(1));
+        if (!finite(p))
+          return "The pressure Laplacian solve (CG with AMG on L_p) returned "
+                 "NaN/Inf: L_p is probably singular next to a body.";
+        return "Each preconditioner part alone is finite on the "
+               "right-hand side.";
+      }
+    } // namespace
+
+
+
+    namespace {
       /** Multiplication by the inverse diagonal of a Trilinos matrix
        *  (deal.II's DiagonalMatrix cannot be sized from one in 9.4). */
       struct Jacobi
@@ -378,6 +417,13 @@ namespace particulate {
                       << "). Reduce 'Time step' in subsection 'Time', or "
                          "raise 'Maximum iterations' in subsection 'Linear "
                          "solver'.";
+              if (!std::isfinite(e.last_residual))
+                message << " "
+                        << locate_non_finite(system_matrix,
+                                             system_rhs,
+                                             velocity_inverse,
+                                             *mass_ilu,
+                                             laplace_inverse);
               throw std::runtime_error(message.str());
             }
           zero_constraints.distribute(newton_update);

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 namespace particulate {
   namespace fluid {
@@ -26,7 +28,7 @@ namespace particulate {
 
 
       /**
-       * Rows of `null_basis` (n_p x k, columns spanning the null space) to
+       * Rows of `null_basis` (n x k, columns spanning the null space) to
        * pin, one per column, chosen by Gaussian elimination with the largest
        * remaining entry as pivot: the pinned rows of the basis form an
        * invertible k x k block, so no null vector survives the pinning.
@@ -58,6 +60,19 @@ namespace particulate {
           }
         return pinned;
       }
+
+
+
+      /// The divergence block of one cell next to a body: (q_k, div v_j)
+      /// for its pressures q_k and its free velocity DoFs v_j.
+      struct CellBlock
+      {
+        std::vector<types::global_dof_index> pressures;
+        std::vector<types::global_dof_index> free_velocities;
+        FullMatrix<double>                   divergence;
+        /// largest singular value of the cell's block on all velocities
+        double scale = 0.;
+      };
     } // namespace
 
 
@@ -70,9 +85,9 @@ namespace particulate {
       const AffineConstraints<double>            &zero_constraints,
       const std::vector<types::global_dof_index> &prescribed_dofs)
     {
-      std::vector<types::global_dof_index> undetermined;
+      std::set<types::global_dof_index> pinned;
       if (prescribed_dofs.empty())
-        return undetermined;
+        return {};
 
       const auto               &fe = dof_handler.get_fe();
       const QGauss<dim>         quadrature(fe.degree + 1);
@@ -91,15 +106,17 @@ namespace particulate {
       const FEValuesExtractors::Vector velocity(0);
       const FEValuesExtractors::Scalar pressure(dim);
 
+      // 1. The cells touching a body. Those without a free velocity lose
+      //    all their pressures at once; the others keep their block.
+      std::map<unsigned int, CellBlock>    blocks; // by active cell index
       std::vector<types::global_dof_index> dofs(n_dofs);
-      std::vector<unsigned int> free_velocity; // positions in velocity_local
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           if (!cell->is_locally_owned())
             continue;
           cell->get_dof_indices(dofs);
           bool touches_body = false, all_constrained = true;
-          free_velocity.clear();
+          std::vector<unsigned int> free; // positions in velocity_local
           for (unsigned int j = 0; j < velocity_local.size(); ++j)
             {
               const auto dof = dofs[velocity_local[j]];
@@ -108,18 +125,17 @@ namespace particulate {
                                                  dof);
               all_constrained &= zero_constraints.is_constrained(dof);
               if (!is_fixed(zero_constraints, dof))
-                free_velocity.push_back(j);
+                free.push_back(j);
             }
           if (!touches_body)
             continue;
-          if (all_constrained || free_velocity.empty())
+          if (all_constrained || free.empty())
             {
               for (const unsigned int k : pressure_local)
-                undetermined.push_back(dofs[k]);
+                pinned.insert(dofs[k]);
               continue;
             }
 
-          // B (n_p x all velocities) with b_kj = (q_k, div v_j)
           fe_values.reinit(cell);
           FullMatrix<double> divergence(n_p, velocity_local.size());
           for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -133,37 +149,106 @@ namespace particulate {
                     += q_jxw
                        * fe_values[velocity].divergence(velocity_local[j], q);
               }
-          // scale: the cell's block without constraints
-          LAPACKFullMatrix<double> full(n_p, velocity_local.size());
-          full = divergence;
-          full.compute_svd();
-          const double reference = full.singular_value(0);
+          // largest singular value of the block on all velocities, from
+          // its n_p x n_p Gram matrix
+          FullMatrix<double> gram_full(n_p, n_p);
+          divergence.mTmult(gram_full, divergence);
+          LAPACKFullMatrix<double> gram(n_p, n_p);
+          gram = gram_full;
+          gram.compute_svd();
 
-          LAPACKFullMatrix<double> restricted(n_p, free_velocity.size());
-          for (unsigned int k = 0; k < n_p; ++k)
-            for (unsigned int j = 0; j < free_velocity.size(); ++j)
-              restricted(k, j) = divergence(k, free_velocity[j]);
-          restricted.compute_svd();
-          const unsigned int n_values
-            = std::min<unsigned int>(n_p, free_velocity.size());
+          CellBlock &block = blocks[cell->active_cell_index()];
+          block.scale      = std::sqrt(gram.singular_value(0));
+          for (const unsigned int k : pressure_local)
+            block.pressures.push_back(dofs[k]);
+          block.divergence.reinit(n_p, free.size());
+          for (unsigned int j = 0; j < free.size(); ++j)
+            {
+              block.free_velocities.push_back(dofs[velocity_local[free[j]]]);
+              for (unsigned int k = 0; k < n_p; ++k)
+                block.divergence(k, j) = divergence(k, free[j]);
+            }
+        }
+
+      // 2. Null modes on patches: a cell next to a body with its face
+      //    neighbours that also touch it (locally owned; a mode across a
+      //    partition boundary is not seen). A left null vector of the patch
+      //    block, on all free velocities of the patch cells, is one of the
+      //    whole system: outside the patch its pressures are zero. Patches
+      //    are taken one after the other, each without the pressures already
+      //    pinned, so every pin removes a mode that is still there (pinning
+      //    a component of a null vector never removes an equation).
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned()
+              || blocks.count(cell->active_cell_index()) == 0)
+            continue;
+          std::vector<const CellBlock *> patch{
+            &blocks.at(cell->active_cell_index())};
+          for (const unsigned int f : cell->face_indices())
+            if (!cell->at_boundary(f) && !cell->neighbor_is_coarser(f))
+              {
+                const auto neighbor = cell->neighbor(f);
+                if (neighbor->is_active() && neighbor->is_locally_owned()
+                    && blocks.count(neighbor->active_cell_index()) > 0)
+                  patch.push_back(&blocks.at(neighbor->active_cell_index()));
+              }
+
+          std::vector<types::global_dof_index>            rows;
+          std::map<types::global_dof_index, unsigned int> columns;
+          double                                          scale = 0.;
+          for (const CellBlock *block : patch)
+            {
+              for (const auto p : block->pressures)
+                if (pinned.count(p) == 0)
+                  rows.push_back(p);
+              for (const auto v : block->free_velocities)
+                columns.emplace(v, columns.size());
+              scale = std::max(scale, block->scale);
+            }
+          if (rows.empty())
+            continue;
+          FullMatrix<double> patch_block(rows.size(), columns.size());
+          for (const CellBlock *block : patch)
+            for (unsigned int k = 0; k < block->pressures.size(); ++k)
+              {
+                const auto row
+                  = std::find(rows.begin(), rows.end(), block->pressures[k]);
+                if (row == rows.end())
+                  continue;
+                for (unsigned int j = 0; j < block->free_velocities.size(); ++j)
+                  patch_block(row - rows.begin(),
+                              columns.at(block->free_velocities[j]))
+                    += block->divergence(k, j);
+              }
+          // The Gram matrix P P^T (rows x rows) has the same left singular
+          // vectors, with the squared singular values: far cheaper than the
+          // SVD of the wide P itself, whose right factor is columns^2. Its
+          // eigenvalues are exact only to about 1e-16 of the largest, so a
+          // mode counts as null below 1e-12 of scale^2 (a singular value
+          // below 1e-6 of the cell's largest).
+          FullMatrix<double> gram_full(rows.size(), rows.size());
+          patch_block.mTmult(gram_full, patch_block);
+          LAPACKFullMatrix<double> gram(rows.size(), rows.size());
+          gram = gram_full;
+          gram.compute_svd();
           unsigned int rank = 0;
-          while (rank < n_values
-                 && restricted.singular_value(rank) > 1e-10 * reference)
+          while (rank < rows.size()
+                 && gram.singular_value(rank) > 1e-12 * scale * scale)
             ++rank;
-          if (rank == n_p)
+          if (rank == rows.size())
             continue;
 
           // left singular vectors beyond the rank span the null space
-          const LAPACKFullMatrix<double> &u = restricted.get_svd_u();
-          FullMatrix<double>              null_basis(n_p, n_p - rank);
-          for (unsigned int k = 0; k < n_p; ++k)
-            for (unsigned int l = rank; l < n_p; ++l)
+          const LAPACKFullMatrix<double> &u = gram.get_svd_u();
+          FullMatrix<double> null_basis(rows.size(), rows.size() - rank);
+          for (unsigned int k = 0; k < rows.size(); ++k)
+            for (unsigned int l = rank; l < rows.size(); ++l)
               null_basis(k, l - rank) = u(k, l);
           for (const unsigned int row : pivot_rows(null_basis))
-            undetermined.push_back(dofs[pressure_local[row]]);
+            pinned.insert(rows[row]);
         }
-      std::sort(undetermined.begin(), undetermined.end());
-      return undetermined;
+      return {pinned.begin(), pinned.end()};
     }
 
 

@@ -28,14 +28,19 @@ namespace particulate {
      * more nodes are covered (`Covered nodes = nearest`), and it is every
      * mode of a cell whose velocities are all constrained.
      *
-     * For each locally owned cell with at least one of `prescribed_dofs`
-     * (the fictitious-boundary velocity DoFs, sorted), the singular value
-     * decomposition of B_free gives the null modes (singular values below
-     * 1e-10 of the largest one of the unconstrained block). One pressure DoF
-     * per null mode is chosen by pivoting (the one with the largest
-     * component left), so that setting the chosen ones to zero removes the
-     * whole null space: the discrete solution is then unique, and equal to
-     * the one with those modes at zero.
+     * Every cell touching one of `prescribed_dofs` (the fictitious-boundary
+     * velocity DoFs, sorted) is examined on a patch: itself and its locally
+     * owned face neighbours that touch a body too, with the divergence block
+     * on all free velocities of the patch. Its left null vectors are null
+     * modes of the whole system (zero outside the patch), including modes
+     * that two cells share. The Gram matrix of the block gives them
+     * (eigenvalues below 1e-12 of the largest squared singular value of a
+     * cell's unconstrained block); one pressure DoF per null mode is chosen
+     * by pivoting (the one with the largest component left), so that
+     * setting the chosen ones to zero removes the null space without
+     * removing an equation. Patches are taken one after another, each
+     * without the DoFs pinned before. Modes across partition boundaries are
+     * not searched for.
      */
     template <int dim>
     std::vector<dealii::types::global_dof_index>
