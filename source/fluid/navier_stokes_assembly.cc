@@ -4,11 +4,13 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <array>
+#include <tuple>
 
 namespace particulate {
   namespace fluid {
@@ -333,21 +335,51 @@ namespace particulate {
       {
         const IndexSet &owned        = matrix.locally_owned_range_indices();
         const MPI_Comm  communicator = matrix.get_mpi_communicator();
-        double          largest      = 0.;
-        for (const auto row : owned)
-          largest = std::max(largest, std::abs(matrix.diag_element(row)));
+        // Epetra's row views: deal.II's row iterators copy a row per
+        // construction, far too slow for this O(nnz) pass on 1e5 rows.
+        const Epetra_CrsMatrix &product  = matrix.trilinos_matrix();
+        const auto              row_view = [&](const int local_row) {
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *columns = nullptr;
+          product.ExtractMyRowView(local_row, n, values, columns);
+          return std::make_tuple(n, values, columns);
+        };
+        std::vector<double> diagonal(product.NumMyRows(), 0.);
+        double              largest = 0.;
+        for (int local = 0; local < product.NumMyRows(); ++local)
+          {
+            const auto [n, values, columns] = row_view(local);
+            const auto row = TrilinosWrappers::global_row_index(product, local);
+            for (int k = 0; k < n; ++k)
+              if (TrilinosWrappers::global_column_index(product, columns[k])
+                  == row)
+                diagonal[local] = values[k];
+            largest = std::max(largest, std::abs(diagonal[local]));
+          }
         largest = Utilities::MPI::max(largest, communicator);
 
         TrilinosWrappers::SparsityPattern
           pattern(owned, matrix.locally_owned_domain_indices(), communicator);
         first_flow_row = numbers::invalid_dof_index;
-        for (const auto row : owned)
+        std::vector<types::global_dof_index> global_columns;
+        for (int local = 0; local < product.NumMyRows(); ++local)
           {
-            pattern.add(row, row);
-            for (auto entry = matrix.begin(row); entry != matrix.end(row);
-                 ++entry)
-              pattern.add(row, entry->column());
-            if (std::abs(matrix.diag_element(row)) > 1e-12 * largest)
+            const auto [n, values, columns] = row_view(local);
+            const auto row = TrilinosWrappers::global_row_index(product, local);
+            global_columns.assign(1, row);
+            for (int k = 0; k < n; ++k)
+              global_columns.push_back(
+                TrilinosWrappers::global_column_index(product, columns[k]));
+            std::sort(global_columns.begin(), global_columns.end());
+            global_columns.erase(std::unique(global_columns.begin(),
+                                             global_columns.end()),
+                                 global_columns.end());
+            pattern.add_entries(row,
+                                global_columns.begin(),
+                                global_columns.end(),
+                                true);
+            if (std::abs(diagonal[local]) > 1e-12 * largest)
               first_flow_row
                 = std::min<types::global_dof_index>(first_flow_row, row);
           }
@@ -355,13 +387,29 @@ namespace particulate {
         first_flow_row = Utilities::MPI::min(first_flow_row, communicator);
 
         TrilinosWrappers::SparseMatrix completed(pattern);
-        for (const auto row : owned)
+        std::vector<TrilinosScalar>    row_values;
+        for (int local = 0; local < product.NumMyRows(); ++local)
           {
-            for (auto entry = matrix.begin(row); entry != matrix.end(row);
-                 ++entry)
-              completed.set(row, entry->column(), entry->value());
-            if (std::abs(matrix.diag_element(row)) <= 1e-12 * largest)
-              completed.set(row, row, largest);
+            const auto [n, values, columns] = row_view(local);
+            const auto row = TrilinosWrappers::global_row_index(product, local);
+            const bool empty = std::abs(diagonal[local]) <= 1e-12 * largest;
+            global_columns.assign(1, row);
+            row_values.assign(1, empty ? largest : diagonal[local]);
+            for (int k = 0; k < n; ++k)
+              {
+                const auto column
+                  = TrilinosWrappers::global_column_index(product, columns[k]);
+                if (column != row)
+                  {
+                    global_columns.push_back(column);
+                    row_values.push_back(values[k]);
+                  }
+              }
+            completed.set(row,
+                          global_columns.size(),
+                          global_columns.data(),
+                          row_values.data(),
+                          false);
           }
         completed.compress(VectorOperation::insert);
         matrix.copy_from(completed);
