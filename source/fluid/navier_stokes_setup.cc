@@ -101,6 +101,7 @@ namespace particulate {
     {
       TimerOutput::Scope scope(timer, "fluid: setup");
       dof_handler.distribute_dofs(fe);
+      decoupled_pressures_searched_for.assign(1, numbers::invalid_dof_index);
       // Cuthill-McKee makes the ILU smoothers of the AMG more effective;
       // then velocity and pressure are put into separate blocks.
       DoFRenumbering::Cuthill_McKee(dof_handler);
@@ -220,11 +221,17 @@ namespace particulate {
       std::sort(prescribed.begin(), prescribed.end());
       if (velocity_multigrid)
         velocity_multigrid->set_masked_dofs(prescribed);
-      decoupled_pressure_dofs
-        = find_undetermined_pressure_dofs(dof_handler,
-                                          mapping,
-                                          zero_constraints,
-                                          prescribed);
+      // The search depends on the covered nodes and the mesh only: the
+      // stages of a time step (same bodies, new Dirichlet times) reuse it.
+      if (prescribed != decoupled_pressures_searched_for)
+        {
+          decoupled_pressure_dofs
+            = find_undetermined_pressure_dofs(dof_handler,
+                                              mapping,
+                                              zero_constraints,
+                                              prescribed);
+          decoupled_pressures_searched_for = std::move(prescribed);
+        }
     }
 
 
@@ -317,6 +324,8 @@ namespace particulate {
     {
       pressure_mass                  = 0.;
       schur_approximation_is_current = false;
+      // new DoFs or a moved mesh: search the undetermined pressures again
+      decoupled_pressures_searched_for.assign(1, numbers::invalid_dof_index);
       // pressure mass matrix and lumped velocity mass: mesh quantities
       TrilinosWrappers::MPI::BlockVector lumped(owned_partitioning,
                                                 communicator);

@@ -315,6 +315,10 @@ namespace particulate {
       /// find_undetermined_pressure_dofs). They are decoupled: no row or
       /// column in the system, and kept at zero after every Newton update.
       std::vector<dealii::types::global_dof_index> decoupled_pressure_dofs;
+      /// the covered velocity DoFs that search was made for (a list that
+      /// matches none after new DoFs or a moved mesh)
+      std::vector<dealii::types::global_dof_index>
+        decoupled_pressures_searched_for;
 
       dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
       /// pressure mass matrix M_p in block (1,1); other blocks empty
