@@ -165,6 +165,27 @@ namespace particulate {
                         "which equals m a = F at convergence but stays stable "
                         "for density ratios near 1 at small time steps. 0 "
                         "gives the plain explicit coupling.");
+      prm.declare_entry("Constraint velocity",
+                        "current",
+                        Patterns::Selection("current|extrapolated"),
+                        "Rigid velocity the covered nodes get for a time "
+                        "step of a free particle. 'current': the particle's "
+                        "velocity at the start of the step, U_n (the fluid "
+                        "lags the particle by dt a: a first-order error in "
+                        "time). 'extrapolated': U_n + dt a_n with a_n the "
+                        "acceleration of the last step, the velocity "
+                        "predicted for the end of the step (likewise for "
+                        "rotation).");
+      prm.declare_entry("Interface position",
+                        "start",
+                        Patterns::Selection("start|midpoint"),
+                        "Where a free particle is when its covered nodes are "
+                        "marked for a time step. 'start': at X_n, so the "
+                        "fluid sees the particle half a step behind on "
+                        "average (first order in time). 'midpoint': at "
+                        "X_n + dt/2 (U_n + dt/2 a_n), the position predicted "
+                        "for the middle of the step; the hydrodynamic torque "
+                        "is taken about that point too.");
       prm.declare_entry("Contact solver",
                         "sequential impulses",
                         Patterns::Selection(
@@ -262,9 +283,12 @@ namespace particulate {
       locked_rotation
         = parse_axes(prm.get("Locked rotations"), "Locked rotations");
       added_mass_coefficient = prm.get_double("Added mass coefficient");
-      contact_solver         = prm.get("Contact solver");
-      restitution            = prm.get_double("Restitution");
-      friction               = prm.get_double("Friction");
+      extrapolate_constraint_velocity
+        = prm.get("Constraint velocity") == "extrapolated";
+      midpoint_interface_position = prm.get("Interface position") == "midpoint";
+      contact_solver              = prm.get("Contact solver");
+      restitution                 = prm.get_double("Restitution");
+      friction                    = prm.get_double("Friction");
       {
         const std::string text = Utilities::trim(prm.get("Contact distance"));
         contact_distance.reset();

@@ -522,19 +522,58 @@ namespace particulate {
           body_output.write(world);
       };
       // fluid loads on the bodies, completed across mirror planes
-      const auto update_loads = [&]() {
-        TimerOutput::Scope           scope(timer, "fbm: forces");
-        std::vector<Eigen::Vector3d> centres;
-        for (const auto id : ids)
-          centres.push_back(world.body(id).position);
-        loads = hydrodynamic_loads(flow, interface, centres);
+      // centres the interface was last marked around
+      std::vector<Eigen::Vector3d> load_centres(n);
+      const auto                   update_loads = [&]() {
+        TimerOutput::Scope scope(timer, "fbm: forces");
+        loads = hydrodynamic_loads(flow, interface, load_centres);
         add_mirror_images(loads, particle_p.symmetry_planes);
       };
       const auto impose_particle_velocities = [&]() {
         TimerOutput::Scope scope(timer, "fbm: containment and constraints");
+        for (unsigned int i = 0; i < n; ++i)
+          load_centres[i] = world.body(ids[i]).position;
         interface.classify(interface_bodies);
         flow.set_fictitious_boundary_values(
           interface.constraint_values(interface_bodies));
+      };
+
+      // The interface a free particle shows the fluid over a step:
+      // 'Constraint velocity = extrapolated' gives the covered nodes
+      // U_n + k a_n, 'Interface position = midpoint' marks them around
+      // X_n + k/2 (U_n + k/2 a_n); the bodies themselves keep their state.
+      // The loads are then taken about the centres that were marked.
+      const auto impose_predicted_interface = [&](const double k) {
+        TimerOutput::Scope scope(timer, "fbm: containment and constraints");
+        std::vector<
+          std::tuple<Eigen::Vector3d, Eigen::Vector3d, Eigen::Vector3d>>
+          current;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            rigid::RigidBody &b = world.body(ids[i]);
+            current.emplace_back(b.position,
+                                 b.linear_velocity,
+                                 b.angular_velocity);
+            if (particle_p.midpoint_interface_position)
+              b.position
+                += 0.5 * k * (b.linear_velocity + 0.5 * k * acceleration[i]);
+            if (particle_p.extrapolate_constraint_velocity)
+              {
+                b.linear_velocity += k * acceleration[i];
+                b.angular_velocity += k * angular_acceleration[i];
+              }
+            load_centres[i] = b.position;
+          }
+        if (particle_p.midpoint_interface_position)
+          interface.classify(interface_bodies);
+        auto values = interface.constraint_values(interface_bodies);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            rigid::RigidBody &b = world.body(ids[i]);
+            std::tie(b.position, b.linear_velocity, b.angular_velocity)
+              = current[i];
+          }
+        flow.set_fictitious_boundary_values(std::move(values));
       };
 
       core::ProgressReporter progress(
@@ -635,6 +674,10 @@ namespace particulate {
               std::optional<TimerOutput::Scope> step_scope;
               step_scope.emplace(timer, "coupled step (total)");
               move_with_bodies(t + dt, dt);
+              if (free && !prescribed
+                  && (particle_p.extrapolate_constraint_velocity
+                      || particle_p.midpoint_interface_position))
+                impose_predicted_interface(dt);
               // 1.-2. fluid with the particles' velocities at t_n
               const fluid::SolveStatistics stats
                 = flow.advance(t, dt, time_p.scheme);

@@ -53,6 +53,12 @@ namespace particulate {
       std::array<bool, 3> locked_rotation = {{false, false, false}};
       /// C in m_a = C rho_f V of the added-mass-corrected coupling
       double added_mass_coefficient = 1.;
+      /// 'Constraint velocity = extrapolated': the covered nodes get the
+      /// velocity predicted for the end of the step, U_n + dt a_n
+      bool extrapolate_constraint_velocity = false;
+      /// 'Interface position = midpoint': the covered nodes of a step are
+      /// those of the particle moved to the middle of the step
+      bool midpoint_interface_position = false;
       /// contact handling
       std::string contact_solver = "sequential impulses";
       double      restitution    = 0.;
