@@ -6,7 +6,10 @@
 #   scripts/validation/ten_cate_levels.sh e4 0 1
 # COVERED_NODES=nearest runs them with 'Covered nodes = nearest' (subsection
 # Particles) into output/ten-cate-<case>-r<level>-nearest/. FIGURES=<dir>
-# puts the figures and table there instead of doc/validation.
+# puts the figures and table there instead of doc/validation. EXTRA_PRM is
+# appended to each case file (printf %b: '\n' for new lines), TAG to the
+# folder names and labels, e.g.
+#   EXTRA_PRM='subsection Time\n set Time step = 0.0025\nend\n' TAG=dt2.5ms
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 case_name="$1"; shift
@@ -15,7 +18,7 @@ base="prm/ten-cate/ten-cate-${case_name}.prm"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 folders=(); labels=()
 for level in "$@"; do
-  out="output/ten-cate-${case_name}-r${level}${COVERED_NODES:+-$COVERED_NODES}"
+  out="output/ten-cate-${case_name}-r${level}${COVERED_NODES:+-$COVERED_NODES}${TAG:+-$TAG}"
   mkdir -p "$out"
   # the case file with another 'Refinements' and output folder
   sed -e "s/^\( *set Refinements *=\).*/\1 ${level}/" \
@@ -24,8 +27,11 @@ for level in "$@"; do
     printf 'subsection Particles\n  set Covered nodes = %s\nend\n' \
       "$COVERED_NODES" >> "$out/case.prm"
   fi
+  if [[ -n "${EXTRA_PRM:-}" ]]; then
+    printf '%b' "$EXTRA_PRM" >> "$out/case.prm"
+  fi
   mpirun -np 2 build/particulate "$out/case.prm" | tee "$out/run.log" || true
-  folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}")
+  folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}${TAG:+, $TAG}")
 done
 /usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}" \
   --doc "${FIGURES:-doc/validation}"
