@@ -55,9 +55,10 @@ namespace particulate {
               // flexible outer solver; FGMRES judges convergence itself.
             }
           iterations += control.last_step();
+          ++solves;
         }
 
-        mutable unsigned int iterations = 0;
+        mutable unsigned int iterations = 0, solves = 0;
 
       private:
         const TrilinosWrappers::SparseMatrix    &matrix;
@@ -427,6 +428,8 @@ namespace particulate {
               throw std::runtime_error(message.str());
             }
           zero_constraints.distribute(newton_update);
+          pressure_poisson_solves += laplace_inverse.solves;
+          pressure_poisson_iterations += laplace_inverse.iterations;
           const unsigned int iterations = control.last_step();
           if (use_chebyshev || velocity_multigrid)
             return iterations;

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <tuple>
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
@@ -20,6 +22,9 @@ namespace particulate {
         profile.phase_seconds[section] = Utilities::MPI::max(seconds, comm);
       profile.phase_calls     = timer.get_summary_data(TimerOutput::n_calls);
       profile.n_velocity_dofs = flow.n_velocity_dofs();
+      std::tie(profile.pressure_poisson_solves,
+               profile.pressure_poisson_iterations)
+        = flow.pressure_poisson_counts();
       profile.flow_memory_bytes
         = Utilities::MPI::sum(flow.memory_consumption(), comm);
     }

@@ -21,6 +21,7 @@
 
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace particulate {
@@ -241,6 +242,13 @@ namespace particulate {
       {
         return owned_partitioning.empty() ? 0 : dofs_per_block[0];
       }
+      /** Inner CG solves with L_p inside the Schur complement approximation
+       *  since the start, and their CG iterations (for the benchmarks). */
+      std::pair<unsigned long, unsigned long>
+      pressure_poisson_counts() const
+      {
+        return {pressure_poisson_solves, pressure_poisson_iterations};
+      }
 
       /** A vector with this solver's layout, locally owned entries only. */
       BlockVector
@@ -340,6 +348,9 @@ namespace particulate {
       bool        has_previous_solution = false;
       /// FGMRES iterations right after the last velocity AMG rebuild
       unsigned int amg_reference_iterations = 0;
+      /// inner L_p solves and their CG iterations, summed over the run
+      unsigned long pressure_poisson_solves     = 0;
+      unsigned long pressure_poisson_iterations = 0;
 
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> velocity_amg;
       /// Jacobi-Chebyshev approximation of the velocity block's inverse

@@ -27,7 +27,11 @@ namespace particulate {
       std::map<std::string, double> phase_calls;
       /// summed over all steps and stages
       unsigned long nonlinear_iterations = 0, linear_iterations = 0;
-      unsigned long n_velocity_dofs = 0;
+      /// inner CG solves with L_p in the Schur complement approximation
+      /// and their iterations (rank 0's counts; all ranks agree)
+      unsigned long pressure_poisson_solves     = 0;
+      unsigned long pressure_poisson_iterations = 0;
+      unsigned long n_velocity_dofs             = 0;
       /// the flow solver's matrices, preconditioners and vectors, all ranks
       std::size_t flow_memory_bytes = 0;
 

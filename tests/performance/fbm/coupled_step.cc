@@ -125,16 +125,17 @@ main(int argc, char **argv)
               reading);
   std::printf("| level | cells/D | DoFs | velocity nodes | s per step | "
               "us per velocity-node-step per core | nonlinear its/step | "
-              "FGMRES its/step | AMG set-ups | system matrix B/DoF | solver "
-              "memory B/DoF | peak RSS B/DoF | SpMV GB/s (%% of read) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "FGMRES its/step | L_p CG its/solve | AMG set-ups | system "
+              "matrix B/DoF | solver memory B/DoF | peak RSS B/DoF | SpMV "
+              "GB/s (%% of read) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto &r : rows)
     {
       const auto  &s     = r.summary;
       const double nodes = s.n_velocity_dofs / 3.;
       std::printf(
-        "| %u | %d | %lu | %.0f | %.3f | %.1f | %.2f | %.1f | %.0f | %.0f | "
-        "%.0f | %.0f | %.1f (%.0f %%) |\n",
+        "| %u | %d | %lu | %.0f | %.3f | %.1f | %.2f | %.1f | %.1f | %.0f | "
+        "%.0f | %.0f | %.0f | %.1f (%.0f %%) |\n",
         r.level,
         3 << r.level,
         s.n_dofs,
@@ -143,6 +144,8 @@ main(int argc, char **argv)
         r.step_seconds * n_ranks / nodes * 1e6,
         double(s.nonlinear_iterations) / s.n_steps,
         double(s.linear_iterations) / s.n_steps,
+        double(s.pressure_poisson_iterations)
+          / std::max(s.pressure_poisson_solves, 1ul),
         s.phase_calls.count("fluid: velocity AMG setup") ?
           s.phase_calls.at("fluid: velocity AMG setup") :
           0.,
