@@ -11,11 +11,11 @@
 // fluid solution, the extrapolation state, bodies and contact cache, the
 // added-mass accelerations and the output series, and both runs rebuild
 // their preconditioners at every checkpoint. Done twice: with the default
-// interface, and with the interface predicted to the middle of the step
-// (midpoint position, extrapolated velocity), which needs the accelerations
-// of the last step from the checkpoint. Runs on all ranks of
-// MPI_COMM_WORLD; then rank 0 alone tries the restart and must be told to
-// use the original number of ranks.
+// interface, predicted to the middle of the step (midpoint position,
+// extrapolated velocity: it needs the accelerations of the last step from
+// the checkpoint), and with the interface at the start of the step. Runs on all
+// ranks of MPI_COMM_WORLD; then rank 0 alone tries the restart and must be told
+// to use the original number of ranks.
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
@@ -110,9 +110,9 @@ main(int argc, char **argv)
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   const std::vector<std::pair<std::string, std::string>> variants
     = {{"", ""},
-       {"_midpoint",
-        " set Constraint velocity = extrapolated\n"
-        " set Interface position = midpoint\n"}};
+       {"_start",
+        " set Constraint velocity = current\n"
+        " set Interface position = start\n"}};
   for (const auto &[suffix, interface] : variants)
     {
       const std::string dir_a = "restart_a" + suffix,

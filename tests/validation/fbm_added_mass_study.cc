@@ -2,15 +2,17 @@
 // coupling for light particles. A disk in the closed box of
 // prm/settling-disk (coarse mesh) with density ratio rho_p/rho_f = 1.1
 // (settling) and 0.5 (rising), time steps 0.25, 1 and 10 ms, with the
-// added-mass correction off (C = 0) and on (C = 1, the default). A run is
+// added-mass correction off (C = 0) and on (C = 1, the default), and with
+// C = 1 and the interface predicted over the step ('Constraint velocity =
+// extrapolated', 'Interface position = midpoint'). A run is
 // unstable when the particle's acceleration changes sign in more than a
 // quarter of the steps (the lagged added-mass force makes it flip every
 // step) or when the run breaks down; a stable run approaches its terminal
 // velocity smoothly. Writes fbm_added_mass_study.dat and prints the table
-// of doc/fbm.md. Gate: every run with C = 1 is stable, and its velocity at
-// t = 0.05 s converges as the step shrinks: the 1 ms run is closer to the
-// 0.25 ms run than the 10 ms run is (the coupling's splitting error is
-// O(dt)).
+// of doc/fbm.md. Gate: every run with C = 1 is stable, with and without the
+// predicted interface, and its velocity at t = 0.05 s converges as the step
+// shrinks: the 1 ms run is closer to the 0.25 ms run than the 10 ms run is
+// (the coupling's splitting error is O(dt)).
 //
 // Model (doc/fbm.md): were the whole added-mass force lagged, the update
 // (m + C rho_f V) a_new = dM g + (C rho_f V - m_a,true) a_old would amplify
@@ -23,6 +25,8 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "../fluid/test_utilities.h"
 
@@ -39,26 +43,31 @@ namespace {
   };
 
   Outcome
-  run(const double ratio, const double dt, const double C)
+  run(const double ratio, const double dt, const double C, const bool predicted)
   {
     char name[96];
     std::snprintf(name,
                   sizeof(name),
-                  "added_mass_r%.2f_dt%.5f_C%.0f",
+                  "added_mass_r%.2f_dt%.5f_C%.0f%s",
                   ratio,
                   dt,
-                  C);
-    char overrides[512];
+                  C,
+                  predicted ? "_predicted" : "");
+    char overrides[640];
     std::snprintf(overrides,
                   sizeof(overrides),
                   "subsection Mesh\n set Refinements = 4\nend\n"
                   "subsection Time\n set Time step = %.10g\n"
                   " set End time = 0.05\nend\n"
                   "subsection Particles\n set Density = %.10g\n"
-                  " set Added mass coefficient = %.10g\nend\n",
+                  " set Added mass coefficient = %.10g\n%s"
+                  "end\n",
                   dt,
                   1000. * ratio,
-                  C);
+                  C,
+                  predicted ? " set Constraint velocity = extrapolated\n"
+                              " set Interface position = midpoint\n" :
+                              "");
     auto parameters = fbm::read_particulate_flow_case(
       testing::source_path("prm/settling-disk/settling-disk.prm"),
       overrides);
@@ -108,59 +117,65 @@ main(int argc, char **argv)
   testing::Checker                         checker;
   std::FILE *table = std::fopen("fbm_added_mass_study.dat", "w");
   std::fprintf(table,
-               "# density_ratio time_step C stable flip_fraction "
-               "velocity_at_0.05s wall_seconds\n");
+               "# density_ratio time_step C predicted_interface stable "
+               "flip_fraction velocity_at_0.05s wall_seconds\n");
   for (const double ratio : {1.1, 0.5})
-    {
-      std::map<double, double> speed_with_correction; // dt -> v(0.05 s)
-      for (const double dt : {0.00025, 0.001, 0.01})
-        for (const double C : {0., 1.})
-          {
-            const Outcome o = run(ratio, dt, C);
-            std::printf("ratio %.2f  dt %6.2f ms  C = %.0f: %-8s acceleration "
-                        "flips %5.1f %% of steps, v(0.05 s) = %+.5e m/s  %s\n",
-                        ratio,
-                        1e3 * dt,
-                        C,
-                        o.stable ? "stable" : "UNSTABLE",
-                        100. * o.flip_fraction,
-                        o.final_speed,
-                        o.note.substr(0, 80).c_str());
-            std::fprintf(table,
-                         "%g %g %g %d %g %.8g %.2f\n",
-                         ratio,
-                         dt,
-                         C,
-                         o.stable ? 1 : 0,
-                         o.flip_fraction,
-                         o.final_speed,
-                         o.wall_seconds);
-            std::fflush(table);
-            if (C == 1.)
-              {
-                char what[96];
-                std::snprintf(what,
-                              sizeof(what),
-                              "C = 1 stable at ratio %.2f, dt %.2f ms",
-                              ratio,
-                              1e3 * dt);
-                checker.check(o.stable, what);
-                speed_with_correction[dt] = o.final_speed;
-              }
-          }
-      const double fine   = speed_with_correction[0.00025];
-      const double middle = std::abs(speed_with_correction[0.001] - fine);
-      const double coarse = std::abs(speed_with_correction[0.01] - fine);
-      char         what[160];
-      std::snprintf(what,
-                    sizeof(what),
-                    "ratio %.2f, C = 1: |v(1 ms) - v(0.25 ms)| = %.2e < "
-                    "|v(10 ms) - v(0.25 ms)| = %.2e",
-                    ratio,
-                    middle,
-                    coarse);
-      checker.check(middle < coarse, what);
-    }
+    for (const bool predicted : {false, true})
+      {
+        // the predicted interface is studied with the correction only
+        const std::vector<double> coefficients
+          = predicted ? std::vector<double>{1.} : std::vector<double>{0., 1.};
+        const std::string variant = predicted ? ", predicted interface" : "";
+        std::map<double, double> speed_with_correction; // dt -> v(0.05 s)
+        for (const double dt : {0.00025, 0.001, 0.01})
+          for (const double C : coefficients)
+            {
+              const Outcome o = run(ratio, dt, C, predicted);
+              std::printf("ratio %.2f  dt %6.2f ms  C = %.0f%s: %-8s "
+                          "acceleration flips %5.1f %% of steps, v(0.05 s) = "
+                          "%+.5e m/s  %s\n",
+                          ratio,
+                          1e3 * dt,
+                          C,
+                          variant.c_str(),
+                          o.stable ? "stable" : "UNSTABLE",
+                          100. * o.flip_fraction,
+                          o.final_speed,
+                          o.note.substr(0, 80).c_str());
+              std::fprintf(table,
+                           "%g %g %g %d %d %g %.8g %.2f\n",
+                           ratio,
+                           dt,
+                           C,
+                           predicted ? 1 : 0,
+                           o.stable ? 1 : 0,
+                           o.flip_fraction,
+                           o.final_speed,
+                           o.wall_seconds);
+              std::fflush(table);
+              if (C == 1.)
+                {
+                  checker.check(o.stable,
+                                "C = 1" + variant + " stable at ratio "
+                                  + std::to_string(ratio) + ", dt "
+                                  + std::to_string(1e3 * dt) + " ms");
+                  speed_with_correction[dt] = o.final_speed;
+                }
+            }
+        const double fine   = speed_with_correction[0.00025];
+        const double middle = std::abs(speed_with_correction[0.001] - fine);
+        const double coarse = std::abs(speed_with_correction[0.01] - fine);
+        char         what[200];
+        std::snprintf(what,
+                      sizeof(what),
+                      "ratio %.2f, C = 1%s: |v(1 ms) - v(0.25 ms)| = %.2e < "
+                      "|v(10 ms) - v(0.25 ms)| = %.2e",
+                      ratio,
+                      variant.c_str(),
+                      middle,
+                      coarse);
+        checker.check(middle < coarse, what);
+      }
   std::fclose(table);
   return checker.exit_code();
 }
