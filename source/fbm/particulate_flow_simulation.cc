@@ -542,7 +542,14 @@ namespace particulate {
       // 'Constraint velocity = extrapolated' gives the covered nodes
       // U_n + k a_n, 'Interface position = midpoint' marks them around
       // X_n + k/2 (U_n + k/2 a_n); the bodies themselves keep their state.
-      // The loads are then taken about the centres that were marked.
+      // The loads are then taken about the centres that were marked. It
+      // replaces the marking at X_n made at the end of the previous step
+      // (which the output at t_n shows); at the start of the step because
+      // only then is the step size k known.
+      const bool predict_interface
+        = free && !prescribed
+          && (particle_p.extrapolate_constraint_velocity
+              || particle_p.midpoint_interface_position);
       const auto impose_predicted_interface = [&](const double k) {
         TimerOutput::Scope scope(timer, "fbm: containment and constraints");
         std::vector<
@@ -674,16 +681,15 @@ namespace particulate {
               std::optional<TimerOutput::Scope> step_scope;
               step_scope.emplace(timer, "coupled step (total)");
               move_with_bodies(t + dt, dt);
-              if (free && !prescribed
-                  && (particle_p.extrapolate_constraint_velocity
-                      || particle_p.midpoint_interface_position))
+              if (predict_interface)
                 impose_predicted_interface(dt);
-              // 1.-2. fluid with the particles' velocities at t_n
+              // 1.-2. fluid with the particles' interface of this step
               const fluid::SolveStatistics stats
                 = flow.advance(t, dt, time_p.scheme);
               summary.nonlinear_iterations += stats.nonlinear_iterations;
               summary.linear_iterations += stats.linear_iterations;
-              // 3. loads from the new flow field, with the interface at t_n
+              // 3. loads from the new flow field, with the interface the
+              //    fluid saw over the step
               update_loads();
               // 4. rigid bodies
               {
