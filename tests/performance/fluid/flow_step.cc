@@ -129,12 +129,13 @@ namespace {
                 k,
                 steps,
                 n_ranks);
-    std::printf("| level | cells | DoFs | velocity nodes | s per step | us "
-                "per velocity-node-step per core | nonlinear its/step | "
-                "linear its/step | linear its per nonlinear step (growth) | "
-                "system matrix B/DoF | solver memory B/DoF | peak RSS B/DoF | "
-                "SpMV GB/s (%% of read) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+      "| level | cells | DoFs | velocity nodes | s per step | us "
+      "per velocity-node-step per core | nonlinear its/step | "
+      "linear its/step | linear its per nonlinear step (growth) | "
+      "L_p CG its/solve | system matrix B/DoF | solver memory B/DoF | peak RSS B/DoF | "
+      "SpMV GB/s (%% of read) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     double previous = 0.;
     for (const auto &r : rows)
       {
@@ -150,7 +151,7 @@ namespace {
                         100. * (per_newton / previous - 1.));
         previous = per_newton;
         std::printf("| %u | %lu | %lu | %.0f | %.3f | %.1f | %.2f | %.1f | "
-                    "%.1f%s | %.0f | %.0f | %.0f | %.1f (%.0f %%) |\n",
+                    "%.1f%s | %.1f | %.0f | %.0f | %.0f | %.1f (%.0f %%) |\n",
                     r.level,
                     s.n_cells,
                     s.n_dofs,
@@ -161,6 +162,8 @@ namespace {
                     double(s.linear_iterations) / s.n_steps,
                     per_newton,
                     growth,
+                    double(s.pressure_poisson_iterations)
+                      / std::max(s.pressure_poisson_solves, 1ul),
                     r.matrix_bytes / s.n_dofs,
                     double(s.flow_memory_bytes) / s.n_dofs,
                     r.resident / s.n_dofs,
