@@ -116,6 +116,138 @@ namespace particulate {
                        const FictitiousBoundary<3> &,
                        const std::vector<Eigen::Vector3d> &);
 
+    template <int dim>
+    std::vector<HydrodynamicLoad>
+    fluid_inertia_loads(
+      const fluid::NavierStokes<dim>                       &flow,
+      const FictitiousBoundary<dim>                        &interface,
+      const typename fluid::NavierStokes<dim>::BlockVector &step_start,
+      const double                                          time_step,
+      const std::vector<RigidStepMotion>                   &motion)
+    {
+      const unsigned int n_bodies = motion.size();
+      if (n_bodies == 0)
+        return {};
+      std::vector<double> sums(6 * n_bodies, 0.);
+
+      const FESystem<dim>             &fe = flow.get_fe();
+      const QGauss<dim>                quadrature(3);
+      FEValues<dim>                    fe_values(flow.get_mapping(),
+                              fe,
+                              quadrature,
+                              update_values | update_gradients
+                                | update_quadrature_points | update_JxW_values);
+      const unsigned int               n_q = quadrature.size();
+      const FEValuesExtractors::Vector velocities(0);
+      std::vector<Tensor<1, dim>>      u(n_q), u_start(n_q), w(n_q);
+      std::vector<Tensor<2, dim>>      grad_u(n_q);
+      std::vector<double>              alpha(n_q);
+      const auto *const                mesh_velocity = flow.get_mesh_velocity();
+      const double rho = flow.get_parameters().properties.density;
+
+      // cell-local index of the x-velocity DoF at each velocity node
+      const unsigned int        n_nodes = interface.nodes_per_cell();
+      std::vector<unsigned int> x_dof(n_nodes);
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const auto base = fe.system_to_base_index(i);
+          if (base.first.first == 0 && base.first.second == 0)
+            x_dof[base.second] = i;
+        }
+
+      std::vector<int> bodies_here;
+      const auto      &cells = interface.owned_cells();
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          const unsigned int *nodes = interface.cell_nodes(c);
+          bodies_here.clear();
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            {
+              const int b = interface.body_of_node(nodes[k]);
+              if (b >= 0
+                  && std::find(bodies_here.begin(), bodies_here.end(), b)
+                       == bodies_here.end())
+                bodies_here.push_back(b);
+            }
+          // Every cell with a covered node: the nodes covered during the
+          // step may lie in cells that are now entirely inside.
+          if (bodies_here.empty())
+            continue;
+
+          fe_values.reinit(cells[c]);
+          fe_values[velocities].get_function_values(flow.get_solution(), u);
+          fe_values[velocities].get_function_values(step_start, u_start);
+          fe_values[velocities].get_function_gradients(flow.get_solution(),
+                                                       grad_u);
+          if (mesh_velocity)
+            fe_values[velocities].get_function_values(*mesh_velocity, w);
+          for (const int b : bodies_here)
+            {
+              const RigidStepMotion &m = motion[b];
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  double a = 0.;
+                  for (unsigned int k = 0; k < n_nodes; ++k)
+                    if (interface.body_of_node(nodes[k]) == b)
+                      a += fe_values.shape_value_component(x_dof[k], q, 0);
+                  alpha[q] = a;
+                }
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  if (alpha[q] == 0.)
+                    continue;
+                  const Tensor<1, dim> convecting
+                    = mesh_velocity ? u[q] - w[q] : u[q];
+                  Tensor<1, dim> material = grad_u[q] * convecting;
+                  if (time_step > 0.)
+                    material += (u[q] - u_start[q]) / time_step;
+                  Eigen::Vector3d Du  = Eigen::Vector3d::Zero(),
+                                  r   = Eigen::Vector3d::Zero();
+                  const Point<dim> &x = fe_values.quadrature_point(q);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      Du[d] = material[d];
+                      r[d]  = x[d] - m.centre[d];
+                    }
+                  const Eigen::Vector3d rigid
+                    = m.acceleration + m.angular_acceleration.cross(r)
+                      + m.angular_velocity.cross(m.angular_velocity.cross(r));
+                  const Eigen::Vector3d f
+                    = -rho * (Du - rigid) * alpha[q] * fe_values.JxW(q);
+                  const Eigen::Vector3d t = r.cross(f);
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      sums[6 * b + d] += f[d];
+                      sums[6 * b + 3 + d] += t[d];
+                    }
+                }
+            }
+        }
+
+      Utilities::MPI::sum(sums, flow.get_communicator(), sums);
+      std::vector<HydrodynamicLoad> loads(n_bodies);
+      for (unsigned int b = 0; b < n_bodies; ++b)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            loads[b].force[d]  = sums[6 * b + d];
+            loads[b].torque[d] = sums[6 * b + 3 + d];
+          }
+      return loads;
+    }
+
+    template std::vector<HydrodynamicLoad>
+    fluid_inertia_loads(const fluid::NavierStokes<2> &,
+                        const FictitiousBoundary<2> &,
+                        const fluid::NavierStokes<2>::BlockVector &,
+                        const double,
+                        const std::vector<RigidStepMotion> &);
+    template std::vector<HydrodynamicLoad>
+    fluid_inertia_loads(const fluid::NavierStokes<3> &,
+                        const FictitiousBoundary<3> &,
+                        const fluid::NavierStokes<3>::BlockVector &,
+                        const double,
+                        const std::vector<RigidStepMotion> &);
+
     void
     add_mirror_images(std::vector<HydrodynamicLoad> &loads,
                       const std::array<bool, 6>     &mirror_planes)

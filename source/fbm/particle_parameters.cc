@@ -189,6 +189,18 @@ namespace particulate {
                         "a light disk's velocity 19 times less between "
                         "dt = 10 ms and 0.25 ms than 'start' with "
                         "'current' (doc/fbm.md, added-mass study).");
+      prm.declare_entry(
+        "Force integral",
+        "stress",
+        Patterns::Selection("stress|stress and inertia"),
+        "How the hydrodynamic force and torque are computed. 'stress': the "
+        "volume integral -int sigma . grad alpha over the cut cells (thesis "
+        "eq. 5.12-5.13), alpha the Q2 interpolant of the covered nodes. "
+        "'stress and inertia': plus -rho_f int (Du/Dt - a_body) alpha, the "
+        "momentum of the fluid in the cut cells and of the nodes the body "
+        "covers during a step, which the stress integral leaves out; the "
+        "sum is the reaction of the discrete momentum equation at the "
+        "covered nodes (doc/fbm.md, 'Force integral').");
       prm.declare_entry("Contact solver",
                         "sequential impulses",
                         Patterns::Selection(
@@ -289,9 +301,11 @@ namespace particulate {
       extrapolate_constraint_velocity
         = prm.get("Constraint velocity") == "extrapolated";
       midpoint_interface_position = prm.get("Interface position") == "midpoint";
-      contact_solver              = prm.get("Contact solver");
-      restitution                 = prm.get_double("Restitution");
-      friction                    = prm.get_double("Friction");
+      force_includes_fluid_inertia
+        = prm.get("Force integral") == "stress and inertia";
+      contact_solver = prm.get("Contact solver");
+      restitution    = prm.get_double("Restitution");
+      friction       = prm.get_double("Friction");
       {
         const std::string text = Utilities::trim(prm.get("Contact distance"));
         contact_distance.reset();

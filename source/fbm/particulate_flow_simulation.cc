@@ -313,7 +313,13 @@ namespace particulate {
             << std::endl;
 
       // --- state ---------------------------------------------------------
-      const unsigned int           n = ids.size();
+      const unsigned int n = ids.size();
+      // the rigid velocities the covered nodes were last given, and those
+      // of the previous step's solve (what the flow holds there at the
+      // start of a step): their difference is the rigid acceleration that
+      // the fluid inside a body saw ('Force integral = stress and inertia')
+      std::vector<Eigen::Vector3d> imposed_velocity(n), imposed_angular(n);
+      std::vector<Eigen::Vector3d> solved_velocity(n), solved_angular(n);
       std::vector<Eigen::Vector3d> acceleration(n, Eigen::Vector3d::Zero()),
         angular_acceleration(n, Eigen::Vector3d::Zero());
       std::vector<HydrodynamicLoad> loads(n);
@@ -350,6 +356,8 @@ namespace particulate {
                 core::write_binary(out, loads[i].torque);
                 core::write_binary(out, summary.max_speed[i]);
                 core::write_binary(out, summary.time_of_max_speed[i]);
+                core::write_binary(out, solved_velocity[i]);
+                core::write_binary(out, solved_angular[i]);
               }
             flow.save_state(out);
             world.save_state(out);
@@ -387,6 +395,8 @@ namespace particulate {
                 loads[i].torque      = core::read_binary<Eigen::Vector3d>(in);
                 summary.max_speed[i] = core::read_binary<double>(in);
                 summary.time_of_max_speed[i] = core::read_binary<double>(in);
+                solved_velocity[i] = core::read_binary<Eigen::Vector3d>(in);
+                solved_angular[i]  = core::read_binary<Eigen::Vector3d>(in);
               }
             flow.load_state(in);
             world.load_state(in);
@@ -524,15 +534,53 @@ namespace particulate {
       // fluid loads on the bodies, completed across mirror planes
       // centres the interface was last marked around
       std::vector<Eigen::Vector3d> load_centres(n);
-      const auto                   update_loads = [&]() {
+      const auto                   record_imposed = [&]() {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            imposed_velocity[i] = world.body(ids[i]).linear_velocity;
+            imposed_angular[i] = world.body(ids[i]).angular_velocity;
+          }
+      };
+      // 'Force integral = stress and inertia': the flow at the start of the
+      // step, and the bodies' rigid accelerations over it
+      std::optional<typename fluid::NavierStokes<dim>::BlockVector> step_start;
+      const auto update_loads = [&](const double k) {
         TimerOutput::Scope scope(timer, "fbm: forces");
         loads = hydrodynamic_loads(flow, interface, load_centres);
+        if (particle_p.force_includes_fluid_inertia)
+          {
+            std::vector<RigidStepMotion> motion(n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                motion[i].centre           = load_centres[i];
+                motion[i].angular_velocity = imposed_angular[i];
+                if (k > 0.)
+                  {
+                    motion[i].acceleration
+                      = (imposed_velocity[i] - solved_velocity[i]) / k;
+                    motion[i].angular_acceleration
+                      = (imposed_angular[i] - solved_angular[i]) / k;
+                  }
+              }
+            const auto inertia
+              = fluid_inertia_loads(flow,
+                                    interface,
+                                    k > 0. ? *step_start : flow.get_solution(),
+                                    k,
+                                    motion);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                loads[i].force += inertia[i].force;
+                loads[i].torque += inertia[i].torque;
+              }
+          }
         add_mirror_images(loads, particle_p.symmetry_planes);
       };
       const auto impose_particle_velocities = [&]() {
         TimerOutput::Scope scope(timer, "fbm: containment and constraints");
         for (unsigned int i = 0; i < n; ++i)
           load_centres[i] = world.body(ids[i]).position;
+        record_imposed();
         interface.classify(interface_bodies);
         flow.set_fictitious_boundary_values(
           interface.constraint_values(interface_bodies));
@@ -574,6 +622,7 @@ namespace particulate {
         if (particle_p.midpoint_interface_position)
           interface.classify(interface_bodies);
         auto values = interface.constraint_values(interface_bodies);
+        record_imposed();
         for (unsigned int i = 0; i < n; ++i)
           {
             rigid::RigidBody &b = world.body(ids[i]);
@@ -636,6 +685,8 @@ namespace particulate {
       impose_particle_velocities();
       if (!parameters.restart)
         {
+          solved_velocity = imposed_velocity;
+          solved_angular  = imposed_angular;
           record_mesh(0., initial_report);
           record(0., dt, fluid::SolveStatistics());
           write_fields(0, 0.);
@@ -664,7 +715,7 @@ namespace particulate {
           // fixed obstacles in steady flow: one nonlinear solve
           const auto stats
             = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
-          update_loads();
+          update_loads(0.);
           step = 1;
           record(0., 0., stats);
           write_fields(1, 0.);
@@ -683,6 +734,8 @@ namespace particulate {
               move_with_bodies(t + dt, dt);
               if (predict_interface)
                 impose_predicted_interface(dt);
+              if (particle_p.force_includes_fluid_inertia)
+                step_start = flow.get_solution();
               // 1.-2. fluid with the particles' interface of this step
               const fluid::SolveStatistics stats
                 = flow.advance(t, dt, time_p.scheme);
@@ -690,7 +743,9 @@ namespace particulate {
               summary.linear_iterations += stats.linear_iterations;
               // 3. loads from the new flow field, with the interface the
               //    fluid saw over the step
-              update_loads();
+              update_loads(dt);
+              solved_velocity = imposed_velocity;
+              solved_angular  = imposed_angular;
               // 4. rigid bodies
               {
                 TimerOutput::Scope           scope(timer, "rigid bodies");

@@ -13,7 +13,9 @@
 // their preconditioners at every checkpoint. Done twice: with the default
 // interface, predicted to the middle of the step (midpoint position,
 // extrapolated velocity: it needs the accelerations of the last step from
-// the checkpoint), and with the interface at the start of the step. Runs on all
+// the checkpoint), with the interface at the start of the step, and with
+// the fluid-inertia force term (it needs the rigid velocities of the last
+// solve from the checkpoint). Runs on all
 // ranks of MPI_COMM_WORLD; then rank 0 alone tries the restart and must be told
 // to use the original number of ranks.
 
@@ -112,7 +114,8 @@ main(int argc, char **argv)
     = {{"", ""},
        {"_start",
         " set Constraint velocity = current\n"
-        " set Interface position = start\n"}};
+        " set Interface position = start\n"},
+       {"_inertia", " set Force integral = stress and inertia\n"}};
   for (const auto &[suffix, interface] : variants)
     {
       const std::string dir_a = "restart_a" + suffix,

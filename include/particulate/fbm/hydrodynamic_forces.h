@@ -39,6 +39,51 @@ namespace particulate {
                        const FictitiousBoundary<dim>      &interface,
                        const std::vector<Eigen::Vector3d> &centres);
 
+    /** The rigid motion of a body over one time step, as the fluid saw it. */
+    struct RigidStepMotion
+    {
+      /// reference point of the torque (where the interface was marked) [m]
+      Eigen::Vector3d centre           = Eigen::Vector3d::Zero();
+      Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
+      /// accelerations of the step [m/s^2], [1/s^2]
+      Eigen::Vector3d acceleration         = Eigen::Vector3d::Zero();
+      Eigen::Vector3d angular_acceleration = Eigen::Vector3d::Zero();
+    };
+
+    /**
+     * The fluid-inertia part of the loads that the stress integral above
+     * leaves out (`Force integral = stress and inertia`, subsection
+     * `Particles`):
+     *
+     *   dF_i = - rho_f int (Du/Dt - a_i(x)) alpha_i,
+     *   dT_i = - rho_f int (x - X_i) x (Du/Dt - a_i(x)) alpha_i,
+     *
+     * with Du/Dt = (u - u_start)/k + ((u - w) . grad) u over the step of
+     * size k (nodal values, so that on a moving mesh with velocity w the
+     * nodal difference is the ALE time derivative) and a_i(x) the rigid
+     * acceleration of body i. Why: testing the discrete momentum equation
+     * with alpha_i instead of a sharp indicator, the stress integral equals
+     * the force on the body only where the fluid moves rigidly with it;
+     * in the band of cut cells where alpha_i falls from 1 to 0 the fluid's
+     * own acceleration, and the jump of the nodes that the body covers
+     * during the step (a jump to the body's velocity), is momentum the
+     * body gives the fluid. Both vanish as the band shrinks (first order
+     * in h); the sum of the two integrals is the reaction of the discrete
+     * momentum equation at the covered nodes, so that body and fluid
+     * exchange momentum exactly. Summed over all ranks.
+     *
+     * @param step_start the flow solution at the start of the step (ghosted)
+     * @param time_step k; 0 for steady flow (no time derivative)
+     */
+    template <int dim>
+    std::vector<HydrodynamicLoad>
+    fluid_inertia_loads(
+      const fluid::NavierStokes<dim>                       &flow,
+      const FictitiousBoundary<dim>                        &interface,
+      const typename fluid::NavierStokes<dim>::BlockVector &step_start,
+      const double                                          time_step,
+      const std::vector<RigidStepMotion>                   &motion);
+
     /**
      * Complete loads integrated over the part of a body inside a symmetric
      * domain: for every mirror plane (normal to axis a; faces in the order

@@ -59,6 +59,9 @@ namespace particulate {
       /// 'Interface position = midpoint': the covered nodes of a step are
       /// those of the particle moved to the middle of the step
       bool midpoint_interface_position = false;
+      /// 'Force integral = stress and inertia': the loads include the
+      /// momentum of the fluid in the cut cells (fluid_inertia_loads)
+      bool force_includes_fluid_inertia = false;
       /// contact handling
       std::string contact_solver = "sequential impulses";
       double      restitution    = 0.;

@@ -217,6 +217,13 @@ namespace particulate {
       {
         return solution;
       }
+      /** The mesh velocity of the ALE terms (ghosted), or nullptr while the
+       *  mesh has not moved. */
+      const BlockVector *
+      get_mesh_velocity() const
+      {
+        return has_mesh_velocity ? &mesh_velocity : nullptr;
+      }
       const ViscosityModel &
       get_viscosity_model() const
       {
