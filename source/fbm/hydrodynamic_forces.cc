@@ -9,6 +9,58 @@ namespace particulate {
   namespace fbm {
     using namespace dealii;
 
+    namespace {
+      /** Cell-local index of the x-velocity DoF at each of the @p n_nodes
+       *  velocity nodes of a cell (the order of FictitiousBoundary's
+       *  cell_nodes()). */
+      template <int dim>
+      std::vector<unsigned int>
+      x_dof_of_nodes(const FESystem<dim> &fe, const unsigned int n_nodes)
+      {
+        std::vector<unsigned int> x_dof(n_nodes);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const auto base = fe.system_to_base_index(i);
+            if (base.first.first == 0 && base.first.second == 0)
+              x_dof[base.second] = i;
+          }
+        return x_dof;
+      }
+
+      /** Add force @p f acting at arm @p r to body @p b's entries of
+       *  @p sums (force, then torque: 6 per body). */
+      void
+      add_load(std::vector<double>   &sums,
+               const int              b,
+               const Eigen::Vector3d &f,
+               const Eigen::Vector3d &r)
+      {
+        const Eigen::Vector3d t = r.cross(f);
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            sums[6 * b + d] += f[d];
+            sums[6 * b + 3 + d] += t[d];
+          }
+      }
+
+      /** The loads of all bodies from their sums over all ranks. */
+      std::vector<HydrodynamicLoad>
+      summed_loads(std::vector<double> &sums, const MPI_Comm communicator)
+      {
+        Utilities::MPI::sum(sums, communicator, sums);
+        std::vector<HydrodynamicLoad> loads(sums.size() / 6);
+        for (unsigned int b = 0; b < loads.size(); ++b)
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              loads[b].force[d]  = sums[6 * b + d];
+              loads[b].torque[d] = sums[6 * b + 3 + d];
+            }
+        return loads;
+      }
+    } // namespace
+
+
+
     template <int dim>
     std::vector<HydrodynamicLoad>
     hydrodynamic_loads(const fluid::NavierStokes<dim>     &flow,
@@ -31,15 +83,8 @@ namespace particulate {
       std::vector<Tensor<2, dim>> sigma(n_q);
       std::vector<Tensor<1, dim>> grad_alpha(n_q);
 
-      // cell-local index of the x-velocity DoF at each velocity node
-      const unsigned int        n_nodes = interface.nodes_per_cell();
-      std::vector<unsigned int> x_dof(n_nodes);
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        {
-          const auto base = fe.system_to_base_index(i);
-          if (base.first.first == 0 && base.first.second == 0)
-            x_dof[base.second] = i;
-        }
+      const unsigned int              n_nodes = interface.nodes_per_cell();
+      const std::vector<unsigned int> x_dof   = x_dof_of_nodes(fe, n_nodes);
 
       std::vector<int> bodies_here;
       const auto      &cells = interface.owned_cells();
@@ -86,25 +131,12 @@ namespace particulate {
                       f3[d] = f[d];
                       r3[d] = x[d] - centres[b][d];
                     }
-                  const Eigen::Vector3d t3 = r3.cross(f3);
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      sums[6 * b + d] += f3[d];
-                      sums[6 * b + 3 + d] += t3[d];
-                    }
+                  add_load(sums, b, f3, r3);
                 }
             }
         }
 
-      Utilities::MPI::sum(sums, flow.get_communicator(), sums);
-      std::vector<HydrodynamicLoad> loads(n_bodies);
-      for (unsigned int b = 0; b < n_bodies; ++b)
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            loads[b].force[d]  = sums[6 * b + d];
-            loads[b].torque[d] = sums[6 * b + 3 + d];
-          }
-      return loads;
+      return summed_loads(sums, flow.get_communicator());
     }
 
     template std::vector<HydrodynamicLoad>
@@ -145,15 +177,8 @@ namespace particulate {
       const auto *const                mesh_velocity = flow.get_mesh_velocity();
       const double rho = flow.get_parameters().properties.density;
 
-      // cell-local index of the x-velocity DoF at each velocity node
-      const unsigned int        n_nodes = interface.nodes_per_cell();
-      std::vector<unsigned int> x_dof(n_nodes);
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        {
-          const auto base = fe.system_to_base_index(i);
-          if (base.first.first == 0 && base.first.second == 0)
-            x_dof[base.second] = i;
-        }
+      const unsigned int              n_nodes = interface.nodes_per_cell();
+      const std::vector<unsigned int> x_dof   = x_dof_of_nodes(fe, n_nodes);
 
       std::vector<int> bodies_here;
       const auto      &cells = interface.owned_cells();
@@ -214,25 +239,12 @@ namespace particulate {
                       + m.angular_velocity.cross(m.angular_velocity.cross(r));
                   const Eigen::Vector3d f
                     = -rho * (Du - rigid) * alpha[q] * fe_values.JxW(q);
-                  const Eigen::Vector3d t = r.cross(f);
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      sums[6 * b + d] += f[d];
-                      sums[6 * b + 3 + d] += t[d];
-                    }
+                  add_load(sums, b, f, r);
                 }
             }
         }
 
-      Utilities::MPI::sum(sums, flow.get_communicator(), sums);
-      std::vector<HydrodynamicLoad> loads(n_bodies);
-      for (unsigned int b = 0; b < n_bodies; ++b)
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            loads[b].force[d]  = sums[6 * b + d];
-            loads[b].torque[d] = sums[6 * b + 3 + d];
-          }
-      return loads;
+      return summed_loads(sums, flow.get_communicator());
     }
 
     template std::vector<HydrodynamicLoad>
