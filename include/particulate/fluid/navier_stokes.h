@@ -86,8 +86,8 @@ namespace particulate {
                    dealii::TimerOutput &timer);
 
       /**
-       * Distribute DoFs, build constraints and matrices, and set the initial
-       * velocity from subsection `Initial condition`.
+       * Distribute DoFs and build constraints and matrices. The solution
+       * is zero until set_initial_condition() (or load_state()).
        */
       void
       setup_dofs();
