@@ -69,6 +69,32 @@ namespace particulate {
                         "No move may leave a cell with a scaled Jacobian below "
                         "this (or below its value before the move): such moves "
                         "are cut back.");
+      prm.declare_entry(
+        "Moving bodies",
+        "re-adapt",
+        Patterns::Selection("re-adapt|carry surface vertices"),
+        "How the mesh follows bodies that move: re-adapt adapts the "
+        "undeformed mesh afresh every time step; 'carry surface vertices' "
+        "(laplace-alpha only) moves the vertices on a surface with their "
+        "body and smooths the others (thesis §5.7), so that no vertex "
+        "crosses a surface, and adapts afresh only when the quality falls "
+        "below 'Re-adaptation quality' or a surface vertex cannot follow.");
+      prm.declare_entry(
+        "Re-adaptation quality",
+        "0.3",
+        Patterns::Double(0., 1.),
+        "'carry surface vertices': adapt afresh when the smallest scaled "
+        "Jacobian of the carried mesh falls below this (and below that of "
+        "the last fresh adaptation). Above 'Minimum cell quality', which "
+        "no move may cross.");
+      prm.declare_entry(
+        "Re-adaptation aspect ratio",
+        "20",
+        Patterns::Double(1.),
+        "'carry surface vertices': adapt afresh when the largest aspect "
+        "ratio of the carried mesh exceeds this (and that of the last fresh "
+        "adaptation): carried vertices stretch the cells between them and "
+        "their undeformed neighbours.");
       prm.leave_subsection();
     }
 
@@ -91,11 +117,16 @@ namespace particulate {
       for (const int s : Utilities::string_to_int(
              Utilities::split_string_list(prm.get("Sweeps per level"))))
         sweeps_per_level.push_back(s);
-      smallest_cell_ratio = prm.get_double("Smallest cell ratio");
-      ode_steps           = prm.get_integer("ODE steps");
-      step_ratio          = prm.get_double("Robust step ratio");
-      projection_range    = prm.get_double("Projection range");
-      min_quality         = prm.get_double("Minimum cell quality");
+      smallest_cell_ratio       = prm.get_double("Smallest cell ratio");
+      ode_steps                 = prm.get_integer("ODE steps");
+      step_ratio                = prm.get_double("Robust step ratio");
+      projection_range          = prm.get_double("Projection range");
+      min_quality               = prm.get_double("Minimum cell quality");
+      following                 = prm.get("Moving bodies") == "re-adapt" ?
+                                    Following::readapt :
+                                    Following::carry_surface;
+      readaptation_quality      = prm.get_double("Re-adaptation quality");
+      readaptation_aspect_ratio = prm.get_double("Re-adaptation aspect ratio");
       prm.leave_subsection();
     }
   } // namespace deformation

@@ -123,10 +123,22 @@ namespace particulate {
     LaplaceAlpha<dim>::deform(Triangulation<dim>       &tria,
                               const DistanceField<dim> &distance) const
     {
+      std::vector<bool> on_surface;
+      return deform(tria, distance, on_surface);
+    }
+
+
+
+    template <int dim>
+    DeformationReport
+    LaplaceAlpha<dim>::deform(Triangulation<dim>       &tria,
+                              const DistanceField<dim> &distance,
+                              std::vector<bool>        &pinned) const
+    {
       DeformationReport          report;
       const VertexHierarchy<dim> hierarchy(tria);
       std::vector<Point<dim>>    positions = tria.get_vertices();
-      std::vector<bool>          pinned(positions.size(), false);
+      pinned.assign(positions.size(), false);
 
       // Put vertex v onto the surface if that keeps it on its boundary.
       auto project = [&](const unsigned int v, std::vector<Point<dim>> &x) {
@@ -225,9 +237,12 @@ namespace particulate {
                                                          projected,
                                                          settings.min_quality);
             positions.swap(projected);
+            // (a vertex may be a candidate twice: near the surface and an
+            // edge midpoint between two surface vertices)
             for (const unsigned int v : placed)
-              if (std::abs(distance.signed_distance(positions[v]))
-                  < 1e-9 * (1. + settings.width))
+              if (!pinned[v]
+                  && std::abs(distance.signed_distance(positions[v]))
+                       < 1e-9 * (1. + settings.width))
                 {
                   pinned[v] = true;
                   ++report.projected_vertices;
@@ -246,6 +261,81 @@ namespace particulate {
           if (level + 1 < hierarchy.n_levels())
             hierarchy.prolongate(level, positions);
         }
+      VertexHierarchy<dim>::write_positions(tria, positions);
+      report.quality = compute_mesh_quality(tria);
+      return report;
+    }
+
+    template <int dim>
+    DeformationReport
+    LaplaceAlpha<dim>::carry(
+      Triangulation<dim>            &tria,
+      const std::vector<Point<dim>> &undeformed,
+      const DistanceField<dim>      &distance,
+      const std::function<Tensor<1, dim>(const Point<dim> &)>
+                        &body_displacement,
+      std::vector<bool> &on_surface) const
+    {
+      DeformationReport              report;
+      const VertexHierarchy<dim>     hierarchy(tria);
+      const std::vector<Point<dim>> &current = tria.get_vertices();
+      AssertDimension(on_surface.size(), current.size());
+      AssertDimension(undeformed.size(), current.size());
+      const double on_surface_tolerance = 1e-9 * (1. + settings.width);
+
+      // where the bodies take their surface vertices (and back onto the
+      // surface: round-off, and the chord of a curved path)
+      std::vector<Point<dim>> target(current.size());
+      for (unsigned int v = 0; v < current.size(); ++v)
+        if (on_surface[v])
+          {
+            target[v] = current[v] + body_displacement(current[v]);
+            Tensor<1, dim> normal;
+            const double   d = distance.signed_distance(target[v], &normal);
+            target[v] -= d * normal;
+          }
+
+      // Laplace-alpha's level-by-level pass from the undeformed mesh, with
+      // the surface vertices put where their body took them instead of
+      // projecting anew: the mesh depends only on where the surface
+      // vertices are, and none changes sides.
+      std::vector<Point<dim>> positions = undeformed;
+      const auto place_surface_vertices = [&](const unsigned int level) {
+        std::vector<Point<dim>> moved = positions;
+        for (const unsigned int v : hierarchy.vertices_on_level(level))
+          if (on_surface[v])
+            moved[v]
+              = positions[v]
+                + hierarchy.admissible_displacement(v,
+                                                    target[v] - positions[v]);
+        const unsigned int held
+          = hierarchy.back_off(level, positions, moved, settings.min_quality);
+        positions.swap(moved);
+        return held;
+      };
+      for (unsigned int level = 0; level < hierarchy.n_levels(); ++level)
+        {
+          place_surface_vertices(level);
+          smooth_level(hierarchy,
+                       level,
+                       distance,
+                       settings,
+                       on_surface,
+                       positions,
+                       report);
+          // those held back get a second try once smoothing made room
+          report.held_back_vertices += place_surface_vertices(level);
+          if (level + 1 < hierarchy.n_levels())
+            hierarchy.prolongate(level, positions);
+        }
+      // a surface vertex that could not follow is one no longer
+      for (unsigned int v = 0; v < positions.size(); ++v)
+        if (on_surface[v]
+            && std::abs(distance.signed_distance(positions[v]))
+                 > on_surface_tolerance)
+          on_surface[v] = false;
+      report.projected_vertices
+        = std::count(on_surface.begin(), on_surface.end(), true);
       VertexHierarchy<dim>::write_positions(tria, positions);
       report.quality = compute_mesh_quality(tria);
       return report;

@@ -1,4 +1,5 @@
 #include <particulate/core/checkpoint.h>
+#include <particulate/deformation/laplace_smoothing.h>
 #include <particulate/deformation/moving_mesh.h>
 #include <particulate/deformation/vertex_hierarchy.h>
 
@@ -16,11 +17,19 @@ namespace particulate {
     MovingMesh<dim>::MovingMesh(const core::MeshParameters  &mesh_parameters,
                                 const DeformationParameters &parameters)
       : method(create_mesh_deformation<dim>(parameters))
+      , following(parameters.following)
+      , readaptation_quality(parameters.readaptation_quality)
+      , readaptation_aspect_ratio(parameters.readaptation_aspect_ratio)
     {
       if (!method)
         throw std::invalid_argument(
           "MovingMesh needs a deformation method ('Method' in subsection "
           "'Mesh deformation' is 'none')");
+      if (following == DeformationParameters::Following::carry_surface
+          && !dynamic_cast<const LaplaceAlpha<dim> *>(method.get()))
+        throw std::invalid_argument(
+          "'Moving bodies = carry surface vertices' needs 'Method = "
+          "laplace-alpha' (subsection 'Mesh deformation')");
       core::create_serial_mesh(mesh_parameters, mesh);
       undeformed = mesh.get_vertices();
     }
@@ -35,7 +44,17 @@ namespace particulate {
       try
         {
           VertexHierarchy<dim>::write_positions(mesh, undeformed);
-          return method->deform(mesh, distance);
+          if (following == DeformationParameters::Following::readapt)
+            return method->deform(mesh, distance);
+          std::vector<bool> placed;
+          const auto        report
+            = static_cast<const LaplaceAlpha<dim> &>(*method).deform(mesh,
+                                                                     distance,
+                                                                     placed);
+          on_surface.swap(placed);
+          fresh_min_quality      = report.quality.min_scaled_jacobian;
+          fresh_max_aspect_ratio = report.quality.max_aspect_ratio;
+          return report;
         }
       catch (const DeformationError &)
         {
@@ -44,6 +63,41 @@ namespace particulate {
           VertexHierarchy<dim>::write_positions(mesh, before);
           throw;
         }
+    }
+
+
+
+    template <int dim>
+    DeformationReport
+    MovingMesh<dim>::follow(
+      const DistanceField<dim> &distance,
+      const std::function<Tensor<1, dim>(const Point<dim> &)>
+        &body_displacement)
+    {
+      if (following == DeformationParameters::Following::readapt
+          || on_surface.empty())
+        {
+          auto report      = adapt(distance);
+          report.readapted = true;
+          return report;
+        }
+      const std::vector<Point<dim>> before  = mesh.get_vertices();
+      std::vector<bool>             carried = on_surface;
+      const auto                    report
+        = static_cast<const LaplaceAlpha<dim> &>(*method)
+            .carry(mesh, undeformed, distance, body_displacement, carried);
+      const bool lost_surface_vertices = carried != on_surface;
+      if (!lost_surface_vertices
+          && report.quality.min_scaled_jacobian
+               >= std::min(readaptation_quality, fresh_min_quality)
+          && report.quality.max_aspect_ratio
+               <= std::max(readaptation_aspect_ratio, fresh_max_aspect_ratio))
+        return report;
+      // the carried mesh has run out of room: start afresh
+      VertexHierarchy<dim>::write_positions(mesh, before);
+      auto fresh      = adapt(distance);
+      fresh.readapted = true;
+      return fresh;
     }
 
 
@@ -67,6 +121,11 @@ namespace particulate {
     MovingMesh<dim>::save(std::ostream &out) const
     {
       core::write_binary_vector(out, mesh.get_vertices());
+      core::write_binary_vector(out,
+                                std::vector<unsigned char>(on_surface.begin(),
+                                                           on_surface.end()));
+      core::write_binary(out, fresh_min_quality);
+      core::write_binary(out, fresh_max_aspect_ratio);
     }
 
 
@@ -81,6 +140,10 @@ namespace particulate {
           "the checkpoint's deformed mesh has " + std::to_string(x.size())
           + " vertices, the case's mesh " + std::to_string(mesh.n_vertices()));
       VertexHierarchy<dim>::write_positions(mesh, x);
+      const auto flags = core::read_binary_vector<unsigned char>(in);
+      on_surface.assign(flags.begin(), flags.end());
+      fresh_min_quality      = core::read_binary<double>(in);
+      fresh_max_aspect_ratio = core::read_binary<double>(in);
     }
 
     template class MovingMesh<2>;

@@ -1,7 +1,10 @@
+#include <particulate/core/checkpoint.h>
 #include <particulate/deformation/distance_field.h>
 #include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/geometry/cylinder.h>
 #include <particulate/geometry/sphere.h>
+
+#include <limits>
 
 namespace particulate {
   namespace fbm {
@@ -26,25 +29,25 @@ namespace particulate {
 
 
     template <int dim>
-    deformation::DeformationReport
-    BodyAdaptedMesh<dim>::adapt_hierarchy(
-      const std::vector<Eigen::Vector3d> &centres)
+    deformation::ShapeDistanceField<dim>
+    BodyAdaptedMesh<dim>::distance_field(
+      const std::vector<Eigen::Vector3d> &centres) const
     {
       std::vector<geometry::PlacedShape> bodies;
       for (const auto &c : centres)
         bodies.push_back(
           {shape.get(), geometry::Pose(Eigen::Matrix3d::Identity(), c)});
-      return moving_mesh.adapt(
-        deformation::ShapeDistanceField<dim>(std::move(bodies)));
+      return deformation::ShapeDistanceField<dim>(std::move(bodies));
     }
 
 
 
     template <int dim>
     deformation::DeformationReport
-    BodyAdaptedMesh<dim>::adapt(const std::vector<Eigen::Vector3d> &centres)
+    BodyAdaptedMesh<dim>::adapt(const std::vector<Eigen::Vector3d> &centres_)
     {
-      const auto report = adapt_hierarchy(centres);
+      const auto report = moving_mesh.adapt(distance_field(centres_));
+      centres           = centres_;
       moving_mesh.copy_vertices_to(tria);
       return report;
     }
@@ -53,13 +56,48 @@ namespace particulate {
 
     template <int dim>
     deformation::DeformationReport
-    BodyAdaptedMesh<dim>::follow(const std::vector<Eigen::Vector3d> &centres,
+    BodyAdaptedMesh<dim>::follow(const std::vector<Eigen::Vector3d> &now,
                                  fluid::NavierStokes<dim>           &flow,
                                  const double                        time_step)
     {
-      const auto report = adapt_hierarchy(centres);
+      AssertDimension(now.size(), centres.size());
+      // a point moves with the particle whose centre was nearest
+      const auto displacement = [&](const dealii::Point<dim> &x) {
+        unsigned int nearest  = 0;
+        double       smallest = std::numeric_limits<double>::max();
+        for (unsigned int b = 0; b < centres.size(); ++b)
+          {
+            double r2 = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              r2 += (x[d] - centres[b][d]) * (x[d] - centres[b][d]);
+            if (r2 < smallest)
+              {
+                smallest = r2;
+                nearest  = b;
+              }
+          }
+        dealii::Tensor<1, dim> shift;
+        for (unsigned int d = 0; d < dim; ++d)
+          shift[d] = now[nearest][d] - centres[nearest][d];
+        return shift;
+      };
+      const auto report = moving_mesh.follow(distance_field(now), displacement);
+      centres           = now;
       flow.move_mesh([&]() { moving_mesh.copy_vertices_to(tria); }, time_step);
       return report;
+    }
+
+
+
+    template <int dim>
+    void
+    BodyAdaptedMesh<dim>::save(std::ostream &out) const
+    {
+      moving_mesh.save(out);
+      std::vector<double> xyz;
+      for (const auto &c : centres)
+        xyz.insert(xyz.end(), c.data(), c.data() + 3);
+      core::write_binary_vector(out, xyz);
     }
 
 
@@ -69,6 +107,11 @@ namespace particulate {
     BodyAdaptedMesh<dim>::load(std::istream &in)
     {
       moving_mesh.load(in);
+      const auto xyz = core::read_binary_vector<double>(in);
+      centres.resize(xyz.size() / 3);
+      for (unsigned int b = 0; b < centres.size(); ++b)
+        centres[b]
+          = Eigen::Vector3d(xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]);
       moving_mesh.copy_vertices_to(tria);
     }
 

@@ -49,6 +49,16 @@ namespace particulate {
             "subsection 'Simulation' is 'fluid': the mesh adapts to "
             "particles, and this case has none. Set 'Method = none' or 'Type "
             "= particulate flow'.");
+      if (deformation.following
+            == deformation::DeformationParameters::Following::carry_surface
+          && deformation.method
+               != deformation::DeformationParameters::Method::laplace_alpha)
+        throw std::runtime_error(
+          filename
+          + ": subsection 'Mesh deformation': 'Moving bodies = carry surface "
+            "vertices' needs 'Method = laplace-alpha', the only method that "
+            "puts vertices onto the surfaces. Set 'Method = laplace-alpha' "
+            "or 'Moving bodies = re-adapt'.");
       // never ignore input silently
       if (flow.simulation.type == core::SimulationParameters::Type::fluid
           && checkpoint.enabled())

@@ -446,7 +446,8 @@ namespace particulate {
                                    "max_aspect_ratio",
                                    "held_back_vertices",
                                    "projected_vertices",
-                                   "adaptation_steps"},
+                                   "adaptation_steps",
+                                   "readapted"},
           communicator,
           parameters.restart);
       const auto record_mesh
@@ -458,7 +459,8 @@ namespace particulate {
                                       r.quality.max_aspect_ratio,
                                       double(r.held_back_vertices),
                                       double(r.projected_vertices),
-                                      double(r.steps)});
+                                      double(r.steps),
+                                      double(r.readapted)});
           };
       core::TimeSeriesWriter flow_series(series_file("flow"),
                                          {"time",

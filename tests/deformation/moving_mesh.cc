@@ -5,6 +5,8 @@
 // - no cell ever inverts or degenerates (scaled Jacobian above the bound,
 //   bounded aspect ratio), also where the disk swallows a coarse edge whole;
 // - Laplace-alpha keeps vertices on the circle all along the path;
+// - with 'Moving bodies = carry surface vertices' no vertex crosses the
+//   circle between two fresh adaptations, which are rare;
 // - copied into a distributed mesh, every cell has the serial positions.
 
 #include <particulate/core/mesh.h>
@@ -47,14 +49,23 @@ main(int argc, char **argv)
   mesh.subdivisions = {11, 2};
   mesh.refinements  = 4;
 
-  for (const auto method : {DeformationParameters::Method::laplace_kappa,
-                            DeformationParameters::Method::laplace_alpha})
+  for (const auto following : {0, 1, 2})
     {
+      const auto            method = following == 0 ?
+                                       DeformationParameters::Method::laplace_kappa :
+                                       DeformationParameters::Method::laplace_alpha;
+      const bool            carry  = following == 2;
       DeformationParameters p;
       p.method = method;
       p.width  = 0.1;
+      if (carry)
+        p.following = DeformationParameters::Following::carry_surface;
       MovingMesh<2>     moving(mesh, p);
-      const std::string name = moving.method_name();
+      const std::string name
+        = moving.method_name() + (carry ? " (carried)" : "");
+      unsigned int readaptations = 0, crossings = 0;
+      long         inside_before = -1;
+      double       x_previous    = 1.1;
 
       // quarter period of x_c = 1.1 + 0.25 sin(2 pi t / 4) in 25 steps
       double       worst_quality = 1., worst_aspect = 1.;
@@ -63,7 +74,21 @@ main(int argc, char **argv)
         {
           const double x_c
             = 1.1 + 0.25 * std::sin(2. * M_PI * 0.25 * (step * 0.04));
-          const auto report = moving.adapt(disk_at(x_c));
+          const auto report
+            = moving.follow(disk_at(x_c), [&](const Point<2> &) {
+                return Tensor<1, 2>({x_c - x_previous, 0.});
+              });
+          x_previous = x_c;
+          // vertices strictly inside the disk: a carried mesh moves none
+          // across the circle
+          long inside = 0;
+          for (const auto &x : moving.hierarchy().get_vertices())
+            inside += x.distance(Point<2>(x_c, 0.2)) < 0.05 - 1e-6;
+          if (report.readapted)
+            ++readaptations;
+          else if (inside != inside_before)
+            ++crossings;
+          inside_before = inside;
           worst_quality
             = std::min(worst_quality, report.quality.min_scaled_jacobian);
           worst_aspect
@@ -74,7 +99,9 @@ main(int argc, char **argv)
       std::cout << name << ": worst min scaled Jacobian " << worst_quality
                 << ", worst aspect ratio " << worst_aspect
                 << ", fewest vertices on the circle " << fewest_projected
-                << '\n';
+                << "; adapted afresh in " << readaptations
+                << " of 26 steps, vertices crossed the circle in " << crossings
+                << " carried steps\n";
       CHECK_MSG(worst_quality >= p.min_quality - 1e-12,
                 name + ": no cell below the quality bound on the whole path");
       CHECK_MSG(worst_aspect < 20.,
@@ -85,6 +112,16 @@ main(int argc, char **argv)
                   name
                     + ": at least 16 vertices on the circle at every "
                       "position");
+      if (carry)
+        {
+          CHECK_MSG(crossings == 0,
+                    name + ": no vertex crosses the circle while carried");
+          CHECK_MSG(readaptations < 26 / 2,
+                    name + ": adapted afresh in fewer than half the steps");
+        }
+      else
+        CHECK_MSG(readaptations == 26,
+                  name + ": 'Moving bodies = re-adapt' adapts every step");
 
       // the distributed copy
       parallel::fullydistributed::Triangulation<2> tria(MPI_COMM_WORLD);

@@ -42,6 +42,23 @@ namespace particulate {
       /// before the move, if that was lower)
       double min_quality = 0.2;
 
+      /** How a mesh follows moving bodies (deformation::MovingMesh). */
+      enum class Following
+      {
+        /// adapt the undeformed mesh afresh every step
+        readapt,
+        /// laplace-alpha: carry the surface vertices with their body,
+        /// smooth the rest; adapt afresh only when the quality demands
+        carry_surface
+      };
+      Following following = Following::readapt;
+      /// carry_surface: adapt afresh when the smallest scaled Jacobian
+      /// falls below this (and below that of the last fresh adaptation)
+      double readaptation_quality = 0.3;
+      /// carry_surface: adapt afresh when the largest aspect ratio exceeds
+      /// this (and that of the last fresh adaptation)
+      double readaptation_aspect_ratio = 20.;
+
       static void
       declare(dealii::ParameterHandler &prm);
       void

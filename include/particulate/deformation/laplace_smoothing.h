@@ -6,6 +6,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <functional>
 #include <vector>
 
 namespace particulate {
@@ -105,6 +106,35 @@ namespace particulate {
       DeformationReport
       deform(dealii::Triangulation<dim> &tria,
              const DistanceField<dim>   &distance) const override;
+
+      /** deform(), also telling which vertices it put onto a surface
+       *  (@p on_surface, one flag per vertex of @p tria). */
+      DeformationReport
+      deform(dealii::Triangulation<dim> &tria,
+             const DistanceField<dim>   &distance,
+             std::vector<bool>          &on_surface) const;
+
+      /**
+       * Follow moving bodies keeping the vertices on their surfaces (thesis
+       * §5.7: the surface vertices move with their body, so no vertex
+       * changes sides). The vertices in @p on_surface move by
+       * @p body_displacement (the displacement over the step of the body
+       * nearest to a point) and back onto the surfaces that @p distance
+       * describes at their new places; the rest of the mesh comes from the
+       * level-by-level pass of deform() started at @p undeformed, with these
+       * vertices placed instead of projected anew, so the mesh depends only
+       * on where the surface vertices are. A surface vertex that a cell's
+       * quality holds back off the surface is released from @p on_surface
+       * (the caller then adapts afresh).
+       */
+      DeformationReport
+      carry(
+        dealii::Triangulation<dim>            &tria,
+        const std::vector<dealii::Point<dim>> &undeformed,
+        const DistanceField<dim>              &distance,
+        const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+                          &body_displacement,
+        std::vector<bool> &on_surface) const;
 
       std::string
       name() const override

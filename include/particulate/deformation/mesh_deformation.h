@@ -23,6 +23,9 @@ namespace particulate {
       unsigned int projected_vertices = 0;
       /// PDE methods: point locations that needed the brute-force search
       unsigned int location_fallbacks = 0;
+      /// MovingMesh::follow(): the mesh was adapted afresh from the
+      /// undeformed one (always, unless surface vertices are carried)
+      bool readapted = false;
       /// quality of the active cells afterwards
       MeshQuality quality;
     };

@@ -7,6 +7,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -50,6 +51,23 @@ namespace particulate {
       adapt(const DistanceField<dim> &distance);
 
       /**
+       * Follow the bodies to where @p distance puts them now. With `Moving
+       * bodies = re-adapt`, adapt() (readapted set in the report). With
+       * `carry surface vertices`, LaplaceAlpha::carry() moves the vertices
+       * on a surface by @p body_displacement (the displacement over the
+       * step of the body nearest to a point) and smooths the rest; adapt()
+       * only when that leaves a cell worse than `Re-adaptation quality` or
+       * `Re-adaptation aspect ratio` (and than the last fresh adaptation's
+       * worst cell), or a surface vertex could not follow. Throws
+       * DeformationError (mesh unchanged) when a fresh adaptation is refused.
+       */
+      DeformationReport
+      follow(
+        const DistanceField<dim> &distance,
+        const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+          &body_displacement);
+
+      /**
        * Give every cell of @p tria (a partition of the same mesh, e.g. a
        * parallel::fullydistributed::Triangulation made by
        * core::create_mesh()) the vertex positions of its twin here.
@@ -71,7 +89,8 @@ namespace particulate {
         return method->name();
       }
 
-      /** Checkpoints: the vertex positions (binary). */
+      /** Checkpoints: the vertex positions and the vertices on a surface
+       *  (binary). */
       void
       save(std::ostream &out) const;
       /** Reads what save() wrote; throws std::runtime_error when the vertex
@@ -82,8 +101,16 @@ namespace particulate {
     private:
       dealii::Triangulation<dim>            mesh;
       std::unique_ptr<MeshDeformation<dim>> method;
+      DeformationParameters::Following      following;
+      double                                readaptation_quality;
+      double                                readaptation_aspect_ratio;
       /// the vertex positions as the case's mesh made them
       std::vector<dealii::Point<dim>> undeformed;
+      /// carry_surface: the vertices Laplace-alpha put onto a surface,
+      /// and the worst cell of the last fresh adaptation
+      std::vector<bool> on_surface;
+      double            fresh_min_quality      = 1.;
+      double            fresh_max_aspect_ratio = 1.;
     };
   } // namespace deformation
 } // namespace particulate

@@ -42,7 +42,10 @@ namespace particulate {
       adapt(const std::vector<Eigen::Vector3d> &centres);
 
       /**
-       * During the run: adapt to the particles' new @p centres and move
+       * During the run: follow the particles to their new @p centres
+       * (deformation::MovingMesh::follow(); carried surface vertices move
+       * with the nearest particle's translation: the shapes are spheres
+       * and disks, which look the same however they turn) and move
        * @p flow's mesh there over the coming step @p time_step (ALE).
        */
       deformation::DeformationReport
@@ -55,10 +58,7 @@ namespace particulate {
       void
       load(std::istream &in);
       void
-      save(std::ostream &out) const
-      {
-        moving_mesh.save(out);
-      }
+      save(std::ostream &out) const;
 
       const deformation::MovingMesh<dim> &
       mesh() const
@@ -67,12 +67,15 @@ namespace particulate {
       }
 
     private:
-      deformation::DeformationReport
-      adapt_hierarchy(const std::vector<Eigen::Vector3d> &centres);
+      /** The particles at @p centres as distance fields. */
+      deformation::ShapeDistanceField<dim>
+      distance_field(const std::vector<Eigen::Vector3d> &centres) const;
 
       deformation::MovingMesh<dim>           moving_mesh;
       dealii::Triangulation<dim>            &tria;
       std::unique_ptr<const geometry::Shape> shape;
+      /// where the mesh last saw the particles
+      std::vector<Eigen::Vector3d> centres;
     };
   } // namespace fbm
 } // namespace particulate
