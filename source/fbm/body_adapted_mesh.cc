@@ -83,7 +83,14 @@ namespace particulate {
       };
       const auto report = moving_mesh.follow(distance_field(now), displacement);
       centres           = now;
-      flow.move_mesh([&]() { moving_mesh.copy_vertices_to(tria); }, time_step);
+      const auto move_vertices = [&]() { moving_mesh.copy_vertices_to(tria); };
+      // A mesh carried with the bodies moves little per step, and the ALE
+      // term accounts for it; a fresh adaptation among carried meshes is a
+      // jump that would show as a spike of the mesh velocity: interpolate.
+      if (moving_mesh.carries_surface_vertices() && report.readapted)
+        flow.transfer_to_moved_mesh(move_vertices);
+      else
+        flow.move_mesh(move_vertices, time_step);
       return report;
     }
 

@@ -82,6 +82,14 @@ namespace particulate {
         return mesh;
       }
 
+      /** True with `Moving bodies = carry surface vertices`: the mesh
+       *  moves gradually, except when follow() adapts afresh. */
+      bool
+      carries_surface_vertices() const
+      {
+        return following == DeformationParameters::Following::carry_surface;
+      }
+
       /** The method's name for the log. */
       std::string
       method_name() const

@@ -46,7 +46,9 @@ namespace particulate {
        * (deformation::MovingMesh::follow(); carried surface vertices move
        * with the nearest particle's translation: the shapes are spheres
        * and disks, which look the same however they turn) and move
-       * @p flow's mesh there over the coming step @p time_step (ALE).
+       * @p flow's mesh there over the coming step @p time_step (ALE), or,
+       * when a carried mesh was adapted afresh, carry the flow over to the
+       * new mesh (fluid::NavierStokes::transfer_to_moved_mesh()).
        */
       deformation::DeformationReport
       follow(const std::vector<Eigen::Vector3d> &centres,

@@ -154,6 +154,20 @@ namespace particulate {
                 const double                 time_step);
 
       /**
+       * Remeshing: @p move_vertices moves the vertices (keeping the
+       * connectivity) by more than a step's ALE motion can carry, e.g. to a
+       * freshly adapted mesh. The velocity at every new node is evaluated
+       * in the old mesh (finite-element interpolation, across ranks) and
+       * the mesh does not move during the next step (w = 0). The pressure
+       * keeps its cell-wise coefficients (the next solve determines it);
+       * the next stage starts without extrapolation. Collective; every
+       * rank must move the vertices of its locally relevant cells alike.
+       * Throws std::runtime_error if a new node lies outside the old mesh.
+       */
+      void
+      transfer_to_moved_mesh(const std::function<void()> &move_vertices);
+
+      /**
        * Checkpoint: writes what the next advance() depends on, this rank's
        * part (locally owned entries of the current solution and of the
        * previous stage's start value used for extrapolation, and that
