@@ -3,6 +3,7 @@
 
 Usage:
     oscillating_cylinder.py LABEL=PATH [LABEL=PATH ...] [--doc DOC_DIR]
+                            [--name NAME]
 
 PATH is either the output folder of a `particulate` run of
 prm/oscillating-cylinder/*.prm (its particle_0.dat holds the force F_x, F_y
@@ -14,7 +15,8 @@ Prints, per run and per period of T = 4 s, the drag extrema beside the
 published +3.24 / -3.26 (Wan & Turek), raw and of the curve averaged over
 0.1 s (spikes of single steps do not count), the largest |c_l|, and the total
 variation of c_d over the period (how oscillatory the curve is). With
---doc writes DOC_DIR/oscillating-cylinder-drag.png and -lift.png.
+--doc writes DOC_DIR/NAME-drag.png and NAME-lift.png (NAME defaults to
+oscillating-cylinder).
 """
 import argparse
 import os
@@ -91,6 +93,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("runs", nargs="+", help="LABEL=PATH")
     parser.add_argument("--doc", help="folder for the figures")
+    parser.add_argument("--name", default="oscillating-cylinder",
+                        help="file name stem of the figures")
     args = parser.parse_args()
 
     runs = []
@@ -138,7 +142,7 @@ def main():
                          "(dotted: published extrema, Wan & Turek)")
             fig.tight_layout()
             fig.savefig(os.path.join(args.doc,
-                                     f"oscillating-cylinder-{name}.png"),
+                                     f"{args.name}-{name}.png"),
                         dpi=120)
             plt.close(fig)
 
