@@ -27,6 +27,29 @@ namespace particulate {
         return x_dof;
       }
 
+      /** The bodies that mark nodes of cell @p c of @p interface, into
+       *  @p bodies (each once); returns whether the cell also has a node
+       *  outside every body. */
+      template <int dim>
+      bool
+      bodies_of_cell(const FictitiousBoundary<dim> &interface,
+                     const unsigned int             c,
+                     std::vector<int>              &bodies)
+      {
+        const unsigned int *nodes = interface.cell_nodes(c);
+        bodies.clear();
+        bool has_outside_node = false;
+        for (unsigned int k = 0; k < interface.nodes_per_cell(); ++k)
+          {
+            const int b = interface.body_of_node(nodes[k]);
+            if (b < 0)
+              has_outside_node = true;
+            else if (std::find(bodies.begin(), bodies.end(), b) == bodies.end())
+              bodies.push_back(b);
+          }
+        return has_outside_node;
+      }
+
       /** Add force @p f acting at arm @p r to body @p b's entries of
        *  @p sums (force, then torque: 6 per body). */
       void
@@ -91,17 +114,8 @@ namespace particulate {
       for (unsigned int c = 0; c < cells.size(); ++c)
         {
           const unsigned int *nodes = interface.cell_nodes(c);
-          bodies_here.clear();
-          bool has_outside_node = false;
-          for (unsigned int k = 0; k < n_nodes; ++k)
-            {
-              const int b = interface.body_of_node(nodes[k]);
-              if (b < 0)
-                has_outside_node = true;
-              else if (std::find(bodies_here.begin(), bodies_here.end(), b)
-                       == bodies_here.end())
-                bodies_here.push_back(b);
-            }
+          const bool          has_outside_node
+            = bodies_of_cell(interface, c, bodies_here);
           // a cut cell of body b has nodes of b and nodes not of b
           if (bodies_here.empty()
               || (!has_outside_node && bodies_here.size() == 1))
@@ -185,15 +199,7 @@ namespace particulate {
       for (unsigned int c = 0; c < cells.size(); ++c)
         {
           const unsigned int *nodes = interface.cell_nodes(c);
-          bodies_here.clear();
-          for (unsigned int k = 0; k < n_nodes; ++k)
-            {
-              const int b = interface.body_of_node(nodes[k]);
-              if (b >= 0
-                  && std::find(bodies_here.begin(), bodies_here.end(), b)
-                       == bodies_here.end())
-                bodies_here.push_back(b);
-            }
+          bodies_of_cell(interface, c, bodies_here);
           // Every cell with a covered node: the nodes covered during the
           // step may lie in cells that are now entirely inside.
           if (bodies_here.empty())
