@@ -10,14 +10,17 @@
 // character, and the final state bit for bit: the checkpoint holds the
 // fluid solution, the extrapolation state, bodies and contact cache, the
 // added-mass accelerations and the output series, and both runs rebuild
-// their preconditioners at every checkpoint. Done twice: with the default
+// their preconditioners at every checkpoint. Done four times: with the default
 // interface, predicted to the middle of the step (midpoint position,
 // extrapolated velocity: it needs the accelerations of the last step from
-// the checkpoint), with the interface at the start of the step, and with
+// the checkpoint), with the interface at the start of the step, with
 // the fluid-inertia force term (it needs the rigid velocities of the last
-// solve from the checkpoint). Runs on all
-// ranks of MPI_COMM_WORLD; then rank 0 alone tries the restart and must be told
-// to use the original number of ranks.
+// solve from the checkpoint), and on a mesh that follows the disk
+// (Laplace-alpha with carried surface vertices: the checkpoint holds the
+// deformed positions, which vertices are on the surface, and where the
+// disk was at the last fresh adaptation; mesh.dat must continue too). Runs on
+// all ranks of MPI_COMM_WORLD; then rank 0 alone tries the restart and must be
+// told to use the original number of ranks.
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
@@ -50,7 +53,8 @@ namespace {
       const std::string &output,
       const double       end_time,
       const bool         restart,
-      const std::string &interface = "")
+      const std::string &particle_entries = "",
+      const std::string &subsections      = "")
   {
     auto parameters = fbm::read_particulate_flow_case(
       testing::source_path("prm/settling-disk/settling-disk.prm"),
@@ -60,9 +64,11 @@ namespace {
         + "\nend\n"
           "subsection Particles\n set Positions = 0.01, 0.0027\n"
           " set Velocities = 0.03, -0.04\n"
-        + interface + "end\n"
+        + particle_entries
+        + "end\n"
           "subsection Output\n set Interval = 10\nend\n"
-          "subsection Checkpoint\n set Step interval = 10\nend\n");
+          "subsection Checkpoint\n set Step interval = 10\nend\n"
+        + subsections);
     parameters.flow.output.directory = output;
     parameters.restart               = restart;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
@@ -110,31 +116,47 @@ main(int argc, char **argv)
   testing::Checker                         checker;
   const MPI_Comm                           comm = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  const std::vector<std::pair<std::string, std::string>> variants
-    = {{"", ""},
+  struct Variant
+  {
+    std::string suffix, particle_entries, subsections;
+  };
+  const std::vector<Variant> variants
+    = {{"", "", ""},
        {"_start",
         " set Constraint velocity = current\n"
-        " set Interface position = start\n"},
-       {"_inertia", " set Force integral = stress and inertia\n"}};
-  for (const auto &[suffix, interface] : variants)
+        " set Interface position = start\n",
+        ""},
+       {"_inertia", " set Force integral = stress and inertia\n", ""},
+       {"_carried",
+        "",
+        "subsection Mesh deformation\n set Method = laplace-alpha\n"
+        " set Width = 0.0025\n"
+        " set Moving bodies = carry surface vertices\nend\n"}};
+  for (const auto &[suffix, particle_entries, subsections] : variants)
     {
-      const std::string dir_a = "restart_a" + suffix,
-                        dir_b = "restart_b" + suffix;
+      const bool        adapted = !subsections.empty();
+      const std::string dir_a   = "restart_a" + suffix,
+                        dir_b   = "restart_b" + suffix;
       if (root)
         for (const std::string &dir : {dir_a, dir_b})
           std::filesystem::remove_all(dir);
       MPI_Barrier(comm);
 
-      const auto a = run(comm, dir_a, 30 * dt, false, interface);
-      run(comm, dir_b, 20 * dt, false, interface);
+      const auto a
+        = run(comm, dir_a, 30 * dt, false, particle_entries, subsections);
+      run(comm, dir_b, 20 * dt, false, particle_entries, subsections);
+      std::vector<std::string> series = {"/particle_0.dat", "/flow.dat"};
+      if (adapted)
+        series.push_back("/mesh.dat");
       if (root)
-        for (const std::string series : {"/particle_0.dat", "/flow.dat"})
+        for (const std::string &file : series)
           {
-            std::ofstream out(dir_b + series, std::ios::app);
-            out << rows_between(dir_a + series, 20 * dt, 25 * dt);
+            std::ofstream out(dir_b + file, std::ios::app);
+            out << rows_between(dir_a + file, 20 * dt, 25 * dt);
           }
       MPI_Barrier(comm);
-      const auto b = run(comm, dir_b, 30 * dt, true, interface);
+      const auto b
+        = run(comm, dir_b, 30 * dt, true, particle_entries, subsections);
       if (!root)
         continue;
       const std::string what
@@ -150,8 +172,8 @@ main(int argc, char **argv)
                 << b.velocity[0].transpose() << what << "\n";
       checker.check(a.max_speed[0] == b.max_speed[0],
                     "largest speed carried across the restart" + what);
-      for (const std::string file :
-           {"/particle_0.dat", "/flow.dat", "/flow.pvd", "/particles.pvd"})
+      series.insert(series.end(), {"/flow.pvd", "/particles.pvd"});
+      for (const std::string &file : series)
         {
           const std::string sa = contents(dir_a + file),
                             sb = contents(dir_b + file);
@@ -172,7 +194,36 @@ main(int argc, char **argv)
               c.push_back(x);
             largest_contact = std::max(largest_contact, std::abs(c[17]));
           }
-      checker.check(largest_contact > 0., "the disk touched the floor" + what);
+      if (!adapted)
+        checker.check(largest_contact > 0.,
+                      "the disk touched the floor" + what);
+      else
+        // the automatic contact distance is the adapted mesh's smallest
+        // cell, 0.18 mm instead of 1.25 mm: the disk is still above it
+        checker.check(largest_contact == 0.,
+                      "no contact above the adapted contact distance" + what);
+      if (adapted)
+        {
+          // after the restart the mesh was carried with the disk (readapted
+          // = 0), which needs the surface vertices from the checkpoint
+          std::istringstream mesh_rows(
+            rows_between(dir_a + "/mesh.dat", 20 * dt, 30 * dt));
+          unsigned int carried = 0, projected = 0;
+          while (std::getline(mesh_rows, line))
+            {
+              std::istringstream  row(line);
+              std::vector<double> c;
+              for (double x; row >> x;)
+                c.push_back(x);
+              carried += (c[7] == 0.);
+              projected = std::max(projected, static_cast<unsigned int>(c[5]));
+            }
+          std::cout << "after the restart: " << carried
+                    << " of 10 steps carried the mesh, " << projected
+                    << " vertices on the disk\n";
+          checker.check(carried > 0 && projected > 0,
+                        "the restarted run carried surface vertices" + what);
+        }
     }
 
   // a checkpoint of n ranks does not restart on another number of ranks
