@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -52,7 +53,19 @@ namespace {
   {
     core::parse_input_file(prm, filename);
     fbm::ParticulateFlowParameters all;
-    all.parse(prm, filename);
+    try
+      {
+        all.parse(prm, filename);
+      }
+    catch (const std::runtime_error &e)
+      {
+        // the checks of values and combinations know the entry, not the
+        // file it came from
+        const std::string message = e.what();
+        if (message.find(filename) != std::string::npos)
+          throw;
+        throw std::runtime_error(filename + ": " + message);
+      }
     return all;
   }
 

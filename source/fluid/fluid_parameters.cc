@@ -282,6 +282,21 @@ namespace particulate {
         "Rebuilt only when the stage's rho/k or theta change (or at every "
         "Newton step for a shear-rate dependent viscosity). Needs a mesh "
         "without hanging nodes and free-slip planes normal to an axis.");
+      prm.declare_entry(
+        "Velocity operator",
+        "assembled",
+        Patterns::Selection("assembled|matrix-free"),
+        "How the outer FGMRES applies the velocity block of the Newton "
+        "system. assembled: a Trilinos matrix, assembled at every Newton "
+        "step. matrix-free: a cell loop with sum factorisation on the "
+        "current iterate (mass, deformation-tensor viscosity, Oseen "
+        "convection with the ALE mesh velocity, and the Newton term), no "
+        "Jacobian assembly and no velocity-block matrix in memory; the "
+        "divergence blocks stay assembled (they change only with the mesh). "
+        "Needs 'Velocity preconditioner = geometric multigrid' (the other "
+        "preconditioners are built from the assembled block) and "
+        "constraints of the form u_i = g only (no hanging nodes, free-slip "
+        "planes normal to an axis).");
       prm.declare_entry("Chebyshev degree",
                         "4",
                         Patterns::Integer(1, 50),
@@ -328,11 +343,20 @@ namespace particulate {
                                     "Pressure Poisson tolerance",
                                     "Linear solver");
       velocity_preconditioner = prm.get("Velocity preconditioner");
-      chebyshev_degree        = prm.get_integer("Chebyshev degree");
-      amg_elliptic            = prm.get_bool("AMG elliptic");
-      amg_smoother            = prm.get("AMG smoother");
-      amg_smoother_sweeps     = prm.get_integer("AMG smoother sweeps");
-      verbose                 = prm.get_bool("Verbose");
+      velocity_operator       = prm.get("Velocity operator");
+      if (velocity_operator == "matrix-free"
+          && velocity_preconditioner != "geometric multigrid")
+        throw std::runtime_error(
+          "subsection 'Linear solver': 'Velocity operator = matrix-free' "
+          "needs 'Velocity preconditioner = geometric multigrid' (it is '"
+          + velocity_preconditioner
+          + "', which is built from the assembled velocity block). Set "
+            "both, or 'Velocity operator = assembled'.");
+      chebyshev_degree    = prm.get_integer("Chebyshev degree");
+      amg_elliptic        = prm.get_bool("AMG elliptic");
+      amg_smoother        = prm.get("AMG smoother");
+      amg_smoother_sweeps = prm.get_integer("AMG smoother sweeps");
+      verbose             = prm.get_bool("Verbose");
       prm.leave_subsection();
     }
 

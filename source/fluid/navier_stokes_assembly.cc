@@ -12,6 +12,10 @@
 #include <array>
 #include <tuple>
 
+#include "momentum_operator.h"
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Vector.h>
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
@@ -38,6 +42,15 @@ namespace particulate {
                                 const bool   assemble_matrix,
                                 const bool   newton)
     {
+      if (momentum_operator)
+        {
+          // nothing to assemble: the residual comes from the matrix-free
+          // form, and the operator takes the iterate instead of a Jacobian
+          assemble_residual_matrix_free(stage);
+          if (assemble_matrix)
+            linearise_momentum_operator(stage, newton);
+          return;
+        }
       TimerOutput::Scope scope(timer,
                                assemble_matrix ? "fluid: assemble matrix" :
                                                  "fluid: assemble residual");
@@ -318,6 +331,156 @@ namespace particulate {
 
 
 
+    template <int dim>
+    void
+    NavierStokes<dim>::linearise_momentum_operator(const Stage &stage,
+                                                   const bool   newton)
+    {
+      TimerOutput::Scope scope(timer, "fluid: linearise velocity operator");
+      TrilinosWrappers::MPI::Vector velocity(owned_partitioning[0],
+                                             communicator);
+      velocity = solution.block(0);
+      TrilinosWrappers::MPI::Vector w;
+      if (has_mesh_velocity)
+        {
+          w.reinit(owned_partitioning[0], communicator);
+          w = mesh_velocity.block(0);
+        }
+      const double rho = parameters.properties.density;
+      momentum_operator->set_linearisation(velocity,
+                                           has_mesh_velocity ? &w : nullptr,
+                                           stage.time_step == 0. ?
+                                             0. :
+                                             rho / stage.time_step,
+                                           stage.theta_implicit,
+                                           rho,
+                                           newton,
+                                           *viscosity_model);
+      velocity_multigrid_is_current = false;
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::compute_explicit_residual(const Stage &stage)
+    {
+      TimerOutput::Scope scope(timer, "fluid: assemble residual");
+      explicit_residual.reinit(owned_partitioning[0], communicator);
+      const double                  rho    = parameters.properties.density;
+      const bool                    steady = stage.time_step == 0.;
+      const double                  te     = steady ? 0. : stage.theta_explicit;
+      TrilinosWrappers::MPI::Vector w;
+      if (has_mesh_velocity)
+        {
+          w.reinit(owned_partitioning[0], communicator);
+          w = mesh_velocity.block(0);
+        }
+      if (!steady)
+        {
+          // -rho/k (u_old, v) + theta_e N(u_old) u_old
+          TrilinosWrappers::MPI::Vector u_old(owned_partitioning[0],
+                                              communicator);
+          u_old = old_solution.block(0);
+          momentum_operator->apply_nonlinear_form(explicit_residual,
+                                                  u_old,
+                                                  has_mesh_velocity ? &w :
+                                                                      nullptr,
+                                                  -rho / stage.time_step,
+                                                  te,
+                                                  rho,
+                                                  *viscosity_model);
+        }
+      if (dynamic_cast<const Functions::ZeroFunction<dim> *>(body_force.get())
+          != nullptr)
+        return;
+      // - rho (theta_i f_new + theta_e f_old, v)
+      const QGauss<dim>           quadrature(3);
+      FEValues<dim>               fe_values(mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_quadrature_points
+                                | update_JxW_values);
+      const unsigned int          n_q = quadrature.size();
+      std::vector<Vector<double>> f_new(n_q, Vector<double>(dim)),
+        f_old(n_q, Vector<double>(dim));
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell()),
+        rows;
+      std::vector<double> values;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            body_force->set_time(stage.time_new);
+            body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                          f_new);
+            body_force->set_time(stage.time_old);
+            body_force->vector_value_list(fe_values.get_quadrature_points(),
+                                          f_old);
+            cell->get_dof_indices(dof_indices);
+            rows.clear();
+            values.clear();
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                if (c == dim)
+                  continue;
+                double load = 0.;
+                for (unsigned int q = 0; q < n_q; ++q)
+                  load
+                    -= rho
+                       * (stage.theta_implicit * f_new[q](c) + te * f_old[q](c))
+                       * fe_values.shape_value(i, q) * fe_values.JxW(q);
+                rows.push_back(dof_indices[i]);
+                values.push_back(load);
+              }
+            explicit_residual.add(rows, values);
+          }
+      explicit_residual.compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::assemble_residual_matrix_free(const Stage &stage)
+    {
+      TimerOutput::Scope            scope(timer, "fluid: assemble residual");
+      const double                  rho = parameters.properties.density;
+      TrilinosWrappers::MPI::Vector u(owned_partitioning[0], communicator),
+        p(owned_partitioning[1], communicator), w;
+      u = solution.block(0);
+      p = solution.block(1);
+      if (has_mesh_velocity)
+        {
+          w.reinit(owned_partitioning[0], communicator);
+          w = mesh_velocity.block(0);
+        }
+      // R_u = rho/k (u, v) + theta_i N(u) u + [explicit part] - (p, div v)
+      momentum_operator->apply_nonlinear_form(system_rhs.block(0),
+                                              u,
+                                              has_mesh_velocity ? &w : nullptr,
+                                              stage.time_step == 0. ?
+                                                0. :
+                                                rho / stage.time_step,
+                                              stage.theta_implicit,
+                                              rho,
+                                              *viscosity_model);
+      system_rhs.block(0) += explicit_residual;
+      gradient_matrix.vmult_add(system_rhs.block(0), p);
+      // R_p = -(div u, q)
+      gradient_matrix.Tvmult(system_rhs.block(1), u);
+      system_rhs *= -1.;
+      // what the constraints make of the assembled right-hand side
+      for (const auto dof : constrained_velocity_dofs)
+        system_rhs(dof) = 0.;
+      for (const auto dof : decoupled_pressure_dofs)
+        system_rhs(dof) = 0.;
+      system_rhs.compress(VectorOperation::insert);
+    }
+
+
+
     namespace {
       /**
        * Decoupled pressures (see NavierStokes::decoupled_pressure_dofs) have
@@ -423,12 +586,45 @@ namespace particulate {
     NavierStokes<dim>::build_schur_complement_approximation()
     {
       TimerOutput::Scope scope(timer, "fluid: Schur approximation");
+      timer.enter_subsection("fluid: Schur approximation: L_p");
       // L_p = B diag(M_u)^{-1} B^T from the divergence blocks of the current
       // matrix (they do not depend on the iterate, only on mesh and
       // constraints). The sign convention B = -div makes L_p positive.
-      system_matrix.block(1, 0).mmult(pressure_laplacian,
-                                      system_matrix.block(0, 1),
+      if (momentum_operator)
+        {
+          // B^T with what the constraints do to the assembled blocks:
+          // rows of constrained velocities and columns of decoupled
+          // pressures zero (diagonal scalings by 0/1 masks)
+          TrilinosWrappers::MPI::Vector free_velocity(owned_partitioning[0],
+                                                      communicator);
+          free_velocity = 1.;
+          for (const auto dof : constrained_velocity_dofs)
+            free_velocity(dof) = 0.;
+          free_velocity.compress(VectorOperation::insert);
+          TrilinosWrappers::MPI::Vector free_pressure(owned_partitioning[1],
+                                                      communicator);
+          free_pressure = 1.;
+          for (const auto dof : decoupled_pressure_dofs)
+            free_pressure(dof - dofs_per_block[0]) = 0.;
+          free_pressure.compress(VectorOperation::insert);
+          constrained_gradient.copy_from(gradient_matrix);
+          // deal.II 9.4 hands out the Epetra matrix as const only; scaling
+          // its values keeps its structure, which is all the wrapper keeps
+          // of it
+          auto &epetra = const_cast<Epetra_CrsMatrix &>(
+            constrained_gradient.trilinos_matrix());
+          AssertThrow(
+            epetra.LeftScale(*free_velocity.trilinos_vector()(0)) == 0
+              && epetra.RightScale(*free_pressure.trilinos_vector()(0)) == 0,
+            ExcMessage("Epetra could not scale B^T."));
+          constrained_gradient.Tmmult(pressure_laplacian,
+                                      constrained_gradient,
                                       inverse_lumped_mass);
+        }
+      else
+        system_matrix.block(1, 0).mmult(pressure_laplacian,
+                                        system_matrix.block(0, 1),
+                                        inverse_lumped_mass);
       types::global_dof_index flow_row;
       regularise_empty_pressure_rows(pressure_laplacian, flow_row);
       if (!parameters.boundary_conditions.pressure_is_determined())
@@ -445,7 +641,10 @@ namespace particulate {
                                    pressure_laplacian.diag_element(flow_row));
           pressure_laplacian.compress(VectorOperation::add);
         }
+      timer.leave_subsection("fluid: Schur approximation: L_p");
 
+      TimerOutput::Scope                                amg_scope(timer,
+                                   "fluid: Schur approximation: AMG set-up");
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
       // Near-null space for ML: one 0/1 vector per P1disc mode (the
       // constant, and each linear one), marking that mode's DoF in every
@@ -491,6 +690,18 @@ namespace particulate {
     NavierStokes<2>::assemble(const Stage &, const bool, const bool);
     template void
     NavierStokes<3>::assemble(const Stage &, const bool, const bool);
+    template void
+    NavierStokes<2>::linearise_momentum_operator(const Stage &, const bool);
+    template void
+    NavierStokes<3>::linearise_momentum_operator(const Stage &, const bool);
+    template void
+    NavierStokes<2>::compute_explicit_residual(const Stage &);
+    template void
+    NavierStokes<3>::compute_explicit_residual(const Stage &);
+    template void
+    NavierStokes<2>::assemble_residual_matrix_free(const Stage &);
+    template void
+    NavierStokes<3>::assemble_residual_matrix_free(const Stage &);
     template void
     NavierStokes<2>::build_schur_complement_approximation();
     template void

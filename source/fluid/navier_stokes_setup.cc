@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <set>
 
+#include "momentum_operator.h"
 #include "undetermined_pressures.h"
 
 namespace particulate {
@@ -96,6 +97,11 @@ namespace particulate {
 
 
     template <int dim>
+    NavierStokes<dim>::~NavierStokes() = default;
+
+
+
+    template <int dim>
     void
     NavierStokes<dim>::setup_dofs()
     {
@@ -142,6 +148,12 @@ namespace particulate {
                                                        timer);
         }
       velocity_multigrid_is_current = false;
+      momentum_operator.reset();
+      if (parameters.linear_solver.velocity_operator == "matrix-free")
+        momentum_operator = std::make_unique<MomentumOperator<dim>>(
+          velocity_multigrid->get_dof_handler(),
+          owned_partitioning[0],
+          mapping);
 
       make_constraints(0.);
       setup_matrices();
@@ -221,6 +233,29 @@ namespace particulate {
       std::sort(prescribed.begin(), prescribed.end());
       if (velocity_multigrid)
         velocity_multigrid->set_masked_dofs(prescribed);
+      if (momentum_operator)
+        {
+          // The operator masks rows and columns: it can represent
+          // constraints u_i = g, not u_i = sum_j c_ij u_j + g.
+          constrained_velocity_dofs.clear();
+          for (const auto &line : zero_constraints.get_lines())
+            if (owned_partitioning[0].is_element(line.index))
+              {
+                if (!line.entries.empty())
+                  throw std::runtime_error(
+                    "'Velocity operator = matrix-free' (subsection 'Linear "
+                    "solver') supports constraints of the form u_i = g "
+                    "only, but velocity DoF "
+                    + std::to_string(line.index)
+                    + " depends on others (a hanging node, or a free-slip "
+                      "boundary that is not a plane normal to a coordinate "
+                      "axis). Use 'Velocity operator = assembled'.");
+                constrained_velocity_dofs.push_back(line.index);
+              }
+          std::sort(constrained_velocity_dofs.begin(),
+                    constrained_velocity_dofs.end());
+          momentum_operator->set_constrained_dofs(constrained_velocity_dofs);
+        }
       // The search depends on the covered nodes and the mesh only: the
       // stages of a time step (same bodies, new Dirichlet times) reuse it.
       if (prescribed != decoupled_pressures_searched_for)
@@ -264,6 +299,8 @@ namespace particulate {
     NavierStokes<dim>::setup_matrices()
     {
       system_matrix.clear();
+      gradient_matrix.clear();
+      constrained_gradient.clear();
       pressure_mass.clear();
       pressure_laplacian.clear();
       velocity_amg.reset();
@@ -278,6 +315,14 @@ namespace particulate {
           for (unsigned int d = 0; d < dim + 1; ++d)
             coupling[c][d]
               = (c == dim && d == dim) ? DoFTools::none : DoFTools::always;
+        if (momentum_operator)
+          // only the gradient block B^T (velocity rows, pressure columns),
+          // without constraints: they enter by scaling (see
+          // build_schur_complement_approximation)
+          for (unsigned int c = 0; c < dim + 1; ++c)
+            for (unsigned int d = 0; d < dim + 1; ++d)
+              coupling[c][d]
+                = (c < dim && d == dim) ? DoFTools::always : DoFTools::none;
         // Constrained rows keep their couplings (keep_constrained_dofs =
         // true): the fictitious-boundary constraints change every time step
         // and must find their entries in the pattern.
@@ -285,14 +330,20 @@ namespace particulate {
                                                   owned_partitioning,
                                                   relevant_partitioning,
                                                   communicator);
+        AffineConstraints<double>              none;
+        none.close();
         DoFTools::make_sparsity_pattern(dof_handler,
                                         coupling,
                                         sp,
-                                        zero_constraints,
+                                        momentum_operator ? none :
+                                                            zero_constraints,
                                         true,
                                         rank);
         sp.compress();
-        system_matrix.reinit(sp);
+        if (momentum_operator)
+          gradient_matrix.reinit(sp.block(0, 1));
+        else
+          system_matrix.reinit(sp);
       }
       {
         Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
@@ -324,6 +375,9 @@ namespace particulate {
     {
       pressure_mass                  = 0.;
       schur_approximation_is_current = false;
+      const bool with_gradient       = momentum_operator != nullptr;
+      if (with_gradient)
+        gradient_matrix = 0.;
       // new DoFs or a moved mesh: search the undetermined pressures again
       decoupled_pressures_searched_for.assign(1, numbers::invalid_dof_index);
       // pressure mass matrix and lumped velocity mass: mesh quantities
@@ -333,10 +387,16 @@ namespace particulate {
       FEValues<dim>                      fe_values(mapping,
                               fe,
                               quadrature,
-                              update_values | update_JxW_values);
+                              update_values | update_JxW_values
+                                | (with_gradient ? update_gradients :
+                                                                        update_default));
       const unsigned int                 dofs_per_cell = fe.n_dofs_per_cell();
       FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
-      Vector<double>     cell_lumped(dofs_per_cell);
+      // B^T: row velocity phi_i (component c_i), column pressure psi_k,
+      // entry -(psi_k, d_{c_i} phi_i) as in the system's assembly
+      FullMatrix<double> cell_gradient(dofs_per_cell, dim + 1);
+      std::vector<types::global_dof_index> pressure_columns(dim + 1);
+      Vector<double>                       cell_lumped(dofs_per_cell);
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
       const FEValuesExtractors::Scalar     pressure(dim);
       std::vector<unsigned int>            pressure_dofs;
@@ -349,6 +409,24 @@ namespace particulate {
             fe_values.reinit(cell);
             cell_mass   = 0;
             cell_lumped = 0;
+            if (with_gradient)
+              {
+                cell_gradient = 0;
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    {
+                      const unsigned int ci
+                        = fe.system_to_component_index(i).first;
+                      if (ci == dim)
+                        continue;
+                      const double d_phi
+                        = fe_values.shape_grad_component(i, q, ci)[ci];
+                      for (unsigned int k = 0; k < pressure_dofs.size(); ++k)
+                        cell_gradient(i, k)
+                          -= fe_values.shape_value(pressure_dofs[k], q) * d_phi
+                             * fe_values.JxW(q);
+                    }
+              }
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
@@ -379,7 +457,24 @@ namespace particulate {
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               if (fe.system_to_component_index(i).first < dim)
                 lumped(dof_indices[i]) += cell_lumped(i);
+            if (with_gradient)
+              {
+                for (unsigned int k = 0; k < pressure_dofs.size(); ++k)
+                  pressure_columns[k]
+                    = dof_indices[pressure_dofs[k]] - dofs_per_block[0];
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  if (fe.system_to_component_index(i).first < dim)
+                    gradient_matrix.add(dof_indices[i],
+                                        pressure_dofs.size(),
+                                        pressure_columns.data(),
+                                        &cell_gradient(i, 0));
+              }
           }
+      if (with_gradient)
+        {
+          gradient_matrix.compress(VectorOperation::add);
+          momentum_operator->update_geometry();
+        }
       pressure_mass.compress(VectorOperation::add);
       lumped.compress(VectorOperation::add);
       inverse_lumped_mass.reinit(owned_partitioning[0], communicator);
@@ -542,6 +637,10 @@ namespace particulate {
         bytes += laplace_amg->memory_consumption();
       if (velocity_multigrid)
         bytes += velocity_multigrid->memory_consumption();
+      if (momentum_operator)
+        bytes += momentum_operator->memory_consumption()
+                 + gradient_matrix.memory_consumption()
+                 + constrained_gradient.memory_consumption();
       for (const BlockVector *v : {&system_rhs,
                                    &newton_update,
                                    &solution,

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "momentum_operator.h"
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
@@ -69,6 +71,81 @@ namespace particulate {
 
 
       /**
+       * The saddle-point operator [A B^T; B 0] of the Newton system, either
+       * the assembled block matrix or the matrix-free velocity block A with
+       * the assembled (and constraint-masked) gradient B^T; B is its
+       * transpose in both (B = -div).
+       */
+      class SystemOperator
+      {
+      public:
+        using Vector        = TrilinosWrappers::MPI::Vector;
+        using BlockVector   = TrilinosWrappers::MPI::BlockVector;
+        using VelocityBlock = std::function<void(Vector &, const Vector &)>;
+
+        explicit SystemOperator(
+          const TrilinosWrappers::BlockSparseMatrix &matrix)
+          : matrix(&matrix)
+        {}
+
+        SystemOperator(const VelocityBlock                  &velocity_block,
+                       const TrilinosWrappers::SparseMatrix &gradient)
+          : velocity_block(velocity_block)
+          , gradient(&gradient)
+        {}
+
+        void
+        vmult(BlockVector &dst, const BlockVector &src) const
+        {
+          if (matrix != nullptr)
+            {
+              matrix->vmult(dst, src);
+              return;
+            }
+          velocity_block(dst.block(0), src.block(0));
+          gradient->vmult_add(dst.block(0), src.block(1));
+          gradient->Tvmult(dst.block(1), src.block(0));
+        }
+
+        /** dst = A src */
+        void
+        apply_velocity_block(Vector &dst, const Vector &src) const
+        {
+          if (matrix != nullptr)
+            matrix->block(0, 0).vmult(dst, src);
+          else
+            velocity_block(dst, src);
+        }
+
+        /** dst = B^T src (pressure to velocity) */
+        void
+        apply_gradient(Vector &dst, const Vector &src) const
+        {
+          if (matrix != nullptr)
+            matrix->block(0, 1).vmult(dst, src);
+          else
+            gradient->vmult(dst, src);
+        }
+
+        /** dst = B src (velocity to pressure) */
+        void
+        apply_divergence(Vector &dst, const Vector &src) const
+        {
+          if (matrix != nullptr)
+            matrix->block(1, 0).vmult(dst, src);
+          else
+            gradient->Tvmult(dst, src);
+        }
+
+      private:
+        const TrilinosWrappers::BlockSparseMatrix *matrix = nullptr;
+        VelocityBlock                              velocity_block;
+        const TrilinosWrappers::SparseMatrix      *gradient = nullptr;
+      };
+
+
+
+      /**
        * Upper block-triangular preconditioner P = [A B^T; 0 -S] with
        * S = B A^{-1} B^T (B = -div, so S is positive):
        *   x_p = -S^{-1} r_p,   x_u = A^{-1} (r_u - B^T x_p),
@@ -89,16 +166,18 @@ namespace particulate {
                                const TrilinosWrappers::MPI::Vector &)>;
 
         BlockTriangularPreconditioner(
-          const TrilinosWrappers::BlockSparseMatrix &matrix,
-          const VelocityInverse                     &velocity_inverse,
-          const TrilinosWrappers::PreconditionILU   &mass_inverse,
-          const PressurePoissonSolver               &laplace_inverse,
-          const TrilinosWrappers::MPI::Vector       &inverse_lumped_mass,
-          const bool                                 least_squares_commutator,
-          const double                               viscous_weight,
-          const double                               inertial_weight,
-          TimerOutput                               &timer)
-          : matrix(matrix)
+          const SystemOperator                    &system,
+          const std::vector<IndexSet>             &owned_partitioning,
+          const MPI_Comm                           communicator,
+          const VelocityInverse                   &velocity_inverse,
+          const TrilinosWrappers::PreconditionILU &mass_inverse,
+          const PressurePoissonSolver             &laplace_inverse,
+          const TrilinosWrappers::MPI::Vector     &inverse_lumped_mass,
+          const bool                               least_squares_commutator,
+          const double                             viscous_weight,
+          const double                             inertial_weight,
+          TimerOutput                             &timer)
+          : system(system)
           , velocity_inverse(velocity_inverse)
           , mass_inverse(mass_inverse)
           , laplace_inverse(laplace_inverse)
@@ -107,11 +186,9 @@ namespace particulate {
           , viscous_weight(viscous_weight)
           , inertial_weight(inertial_weight)
           , timer(timer)
-          , tmp_u(matrix.block(0, 0).locally_owned_range_indices(),
-                  matrix.get_mpi_communicator())
+          , tmp_u(owned_partitioning[0], communicator)
           , tmp_u2(tmp_u)
-          , tmp_p(matrix.block(1, 1).locally_owned_range_indices(),
-                  matrix.get_mpi_communicator())
+          , tmp_p(owned_partitioning[1], communicator)
         {}
 
         void
@@ -121,7 +198,7 @@ namespace particulate {
             TimerOutput::Scope scope(timer, "fluid: Schur complement solves");
             apply_schur_inverse(dst.block(1), src.block(1));
           }
-          matrix.block(0, 1).vmult(tmp_u, dst.block(1));
+          system.apply_gradient(tmp_u, dst.block(1));
           tmp_u.sadd(-1., src.block(0));
           TimerOutput::Scope scope(timer, "fluid: velocity preconditioner");
           velocity_inverse(dst.block(0), tmp_u);
@@ -136,11 +213,11 @@ namespace particulate {
           if (least_squares_commutator)
             {
               laplace_inverse.solve(tmp_p, src);
-              matrix.block(0, 1).vmult(tmp_u, tmp_p);
+              system.apply_gradient(tmp_u, tmp_p);
               tmp_u.scale(inverse_lumped_mass);
-              matrix.block(0, 0).vmult(tmp_u2, tmp_u);
+              system.apply_velocity_block(tmp_u2, tmp_u);
               tmp_u2.scale(inverse_lumped_mass);
-              matrix.block(1, 0).vmult(tmp_p, tmp_u2);
+              system.apply_divergence(tmp_p, tmp_u2);
               laplace_inverse.solve(dst, tmp_p);
               dst *= -1.;
             }
@@ -156,16 +233,16 @@ namespace particulate {
             }
         }
 
-        const TrilinosWrappers::BlockSparseMatrix &matrix;
-        const VelocityInverse                     &velocity_inverse;
-        const TrilinosWrappers::PreconditionILU   &mass_inverse;
-        const PressurePoissonSolver               &laplace_inverse;
-        const TrilinosWrappers::MPI::Vector       &inverse_lumped_mass;
-        const bool                                 least_squares_commutator;
-        const double                               viscous_weight;
-        const double                               inertial_weight;
-        TimerOutput                               &timer;
-        mutable TrilinosWrappers::MPI::Vector      tmp_u, tmp_u2, tmp_p;
+        const SystemOperator                    &system;
+        const VelocityInverse                   &velocity_inverse;
+        const TrilinosWrappers::PreconditionILU &mass_inverse;
+        const PressurePoissonSolver             &laplace_inverse;
+        const TrilinosWrappers::MPI::Vector     &inverse_lumped_mass;
+        const bool                               least_squares_commutator;
+        const double                             viscous_weight;
+        const double                             inertial_weight;
+        TimerOutput                             &timer;
+        mutable TrilinosWrappers::MPI::Vector    tmp_u, tmp_u2, tmp_p;
       };
     } // namespace
 
@@ -179,7 +256,7 @@ namespace particulate {
        */
       std::string
       locate_non_finite(
-        const TrilinosWrappers::BlockSparseMatrix            &matrix,
+        const TrilinosWrappers::BlockSparseMatrix            *matrix,
         const TrilinosWrappers::MPI::BlockVector             &rhs,
         const BlockTriangularPreconditioner::VelocityInverse &velocity,
         const TrilinosWrappers::PreconditionILU              &mass,
@@ -190,7 +267,7 @@ namespace particulate {
         };
         if (!std::isfinite(rhs.l2_norm()))
           return "The right-hand side is not finite.";
-        if (!std::isfinite(matrix.frobenius_norm()))
+        if (matrix != nullptr && !std::isfinite(matrix->frobenius_norm()))
           return "The system matrix is not finite.";
         TrilinosWrappers::MPI::Vector u(rhs.block(0)), p(rhs.block(1));
         velocity(u, rhs.block(0));
@@ -375,8 +452,18 @@ namespace particulate {
                 else
                   velocity_amg->vmult(dst, src);
               };
+          const SystemOperator system
+            = momentum_operator ? SystemOperator(
+                [this](TrilinosWrappers::MPI::Vector       &dst,
+                       const TrilinosWrappers::MPI::Vector &src) {
+                  momentum_operator->vmult(dst, src);
+                },
+                constrained_gradient) :
+                                  SystemOperator(system_matrix);
           const BlockTriangularPreconditioner preconditioner(
-            system_matrix,
+            system,
+            owned_partitioning,
+            communicator,
             velocity_inverse,
             *mass_ilu,
             laplace_inverse,
@@ -397,10 +484,7 @@ namespace particulate {
           newton_update = 0;
           try
             {
-              solver.solve(system_matrix,
-                           newton_update,
-                           system_rhs,
-                           preconditioner);
+              solver.solve(system, newton_update, system_rhs, preconditioner);
             }
           catch (const SolverControl::NoConvergence &e)
             {
@@ -420,7 +504,8 @@ namespace particulate {
                          "solver'.";
               if (!std::isfinite(e.last_residual))
                 message << " "
-                        << locate_non_finite(system_matrix,
+                        << locate_non_finite(momentum_operator ? nullptr :
+                                                                 &system_matrix,
                                              system_rhs,
                                              velocity_inverse,
                                              *mass_ilu,
@@ -457,6 +542,8 @@ namespace particulate {
       for (const auto dof : decoupled_pressure_dofs)
         iterate(dof) = 0.;
       solution = iterate;
+      if (momentum_operator)
+        compute_explicit_residual(stage);
 
       SolveStatistics stats;
       bool            newton = nl.method == "Newton";

@@ -559,6 +559,15 @@ namespace particulate {
 
 
     template <int dim>
+    const DoFHandler<dim> &
+    VelocityMultigrid<dim>::get_dof_handler() const
+    {
+      return implementation->dofs;
+    }
+
+
+
+    template <int dim>
     std::size_t
     VelocityMultigrid<dim>::memory_consumption() const
     {

@@ -93,10 +93,13 @@ namespace particulate {
       /// "AMG" or "Chebyshev" (Jacobi-Chebyshev polynomial, no hierarchy)
       std::string  velocity_preconditioner = "AMG";
       unsigned int chebyshev_degree        = 4;
-      bool         amg_elliptic            = true;
-      std::string  amg_smoother            = "Chebyshev";
-      unsigned int amg_smoother_sweeps     = 2;
-      bool         verbose                 = false;
+      /// "assembled" or "matrix-free" (the velocity block of the outer
+      /// FGMRES operator)
+      std::string  velocity_operator   = "assembled";
+      bool         amg_elliptic        = true;
+      std::string  amg_smoother        = "Chebyshev";
+      unsigned int amg_smoother_sweeps = 2;
+      bool         verbose             = false;
 
       static void
       declare(dealii::ParameterHandler &prm);

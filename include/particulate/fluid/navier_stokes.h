@@ -26,6 +26,9 @@
 
 namespace particulate {
   namespace fluid {
+    template <int dim>
+    class MomentumOperator;
+
     /**
      * One implicit stage of a one-step scheme (thesis eq. 5.14/5.16):
      *
@@ -84,6 +87,7 @@ namespace particulate {
       NavierStokes(const FluidParameters &parameters,
                    dealii::parallel::fullydistributed::Triangulation<dim> &tria,
                    dealii::TimerOutput &timer);
+      ~NavierStokes();
 
       /**
        * Distribute DoFs and build constraints and matrices. The solution
@@ -199,7 +203,8 @@ namespace particulate {
       std::size_t
       memory_consumption() const;
 
-      /** The matrix of the last linear solve (for benchmarks). */
+      /** The matrix of the last linear solve (for benchmarks); empty with
+       *  'Velocity operator = matrix-free'. */
       const dealii::TrilinosWrappers::BlockSparseMatrix &
       get_system_matrix() const
       {
@@ -298,6 +303,18 @@ namespace particulate {
       assemble(const Stage &stage,
                const bool   assemble_matrix,
                const bool   newton);
+      /** With the matrix-free velocity operator: hand the current iterate
+       *  to it (what assembling the Jacobian is for the assembled one). */
+      void
+      linearise_momentum_operator(const Stage &stage, const bool newton);
+      /** With the matrix-free velocity operator: the part of the residual
+       *  that is fixed within a stage (old solution, body force). */
+      void
+      compute_explicit_residual(const Stage &stage);
+      /** With the matrix-free velocity operator: system_rhs = -R without a
+       *  FEValues loop (the nonlinear form, B^T p and B u). */
+      void
+      assemble_residual_matrix_free(const Stage &stage);
       /** L_p and its AMG, M_p and its ILU. */
       void
       build_schur_complement_approximation();
@@ -350,6 +367,19 @@ namespace particulate {
         decoupled_pressures_searched_for;
 
       dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
+      /// 'Velocity operator = matrix-free': the velocity block as an
+      /// operator (the assembled system_matrix stays empty), the gradient
+      /// B^T without constraints (a mesh quantity), and B^T with the rows
+      /// of constrained velocities and the columns of decoupled pressures
+      /// zeroed (rebuilt with the Schur complement approximation, i.e.
+      /// when the constrained nodes change)
+      std::unique_ptr<MomentumOperator<dim>> momentum_operator;
+      dealii::TrilinosWrappers::SparseMatrix gradient_matrix;
+      dealii::TrilinosWrappers::SparseMatrix constrained_gradient;
+      /// locally owned constrained velocity DoFs (matrix-free operator)
+      std::vector<dealii::types::global_dof_index> constrained_velocity_dofs;
+      /// the stage's explicit part of R_u (matrix-free operator)
+      dealii::TrilinosWrappers::MPI::Vector explicit_residual;
       /// pressure mass matrix M_p in block (1,1); other blocks empty
       dealii::TrilinosWrappers::BlockSparseMatrix pressure_mass;
       /// L_p = B diag(M_u)^{-1} B^T, rebuilt when B changes

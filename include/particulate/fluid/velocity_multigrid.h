@@ -94,6 +94,11 @@ namespace particulate {
       vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
             const dealii::TrilinosWrappers::MPI::Vector &src) const;
 
+      /** The Q2^dim velocity DoF handler, numbered like the velocity block
+       *  of the system (the matrix-free outer operator works on it too). */
+      const dealii::DoFHandler<dim> &
+      get_dof_handler() const;
+
       /** Bytes held by this rank (operators, transfer, coarse matrix). */
       std::size_t
       memory_consumption() const;
