@@ -22,6 +22,7 @@
 #include <deal.II/multigrid/mg_transfer_matrix_free.h>
 #include <deal.II/multigrid/multigrid.h>
 
+#include <array>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -127,19 +128,46 @@ namespace particulate {
       std::vector<types::global_dof_index> masked_active_dofs;
 
       MGLevelObject<std::shared_ptr<const MatrixFree<dim, float>>> matrix_free;
-      MGLevelObject<LevelOperator>                                 operators;
       AffineConstraints<float>         coarse_constraints;
       MGTransferMatrixFree<dim, float> transfer;
-      MGSmootherPrecondition<LevelOperator, Smoother, LevelVector> smoother;
-      mg::Matrix<LevelVector>                                      mg_matrix;
-      CoarseSolver                                                 coarse;
-      std::unique_ptr<Multigrid<LevelVector>>                      multigrid;
-      std::unique_ptr<
-        PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>
-           preconditioner;
-      bool linearised = false;
-      /// the coefficients of the current hierarchy (c_m, theta_i)
-      double             current_mass = -1., current_theta = -1.;
+      /// the coarse matrix's pattern, locally owned rows, and the constant
+      /// modes of its ML (shared by the hierarchies)
+      std::unique_ptr<TrilinosWrappers::SparsityPattern> coarse_pattern;
+      IndexSet                                           coarse_owned;
+      std::vector<std::vector<bool>>                     coarse_modes;
+      /// the finest level's masked DoFs (level numbering)
+      std::vector<types::global_dof_index> masked_level_dofs;
+
+      /**
+       * The level operators with one set of coefficients and the V-cycle
+       * built on them (smoother eigenvalue estimates, coarse matrix and its
+       * AMG). Fractional-step theta alternates two sets of (rho/k,
+       * theta_i) stage by stage; with one hierarchy per set the V-cycles
+       * are built once per run instead of two or three times per step.
+       */
+      struct Hierarchy
+      {
+        MGLevelObject<LevelOperator>                                 operators;
+        MGSmootherPrecondition<LevelOperator, Smoother, LevelVector> smoother;
+        mg::Matrix<LevelVector>                                      mg_matrix;
+        CoarseSolver                                                 coarse;
+        std::unique_ptr<Multigrid<LevelVector>>                      multigrid;
+        std::unique_ptr<
+          PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>
+                      preconditioner;
+        bool          geometry_is_current = false;
+        bool          linearised          = false;
+        double        mass = -1., theta = -1.; ///< its coefficients
+        unsigned long last_use = 0;
+      };
+      std::array<Hierarchy, 2> hierarchies;
+      unsigned int             active = 0;
+      unsigned long            n_uses = 0;
+
+      /** Level operators and V-cycle of @p h on the current geometry. */
+      void
+      prepare(Hierarchy &h);
+
       mutable FineVector fine_src, fine_dst;
     };
 
@@ -333,7 +361,6 @@ namespace particulate {
     VelocityMultigrid<dim>::Implementation::build_levels()
     {
       matrix_free.resize(0, finest_level);
-      operators.resize(0, finest_level);
       std::vector<std::shared_ptr<const Utilities::MPI::Partitioner>>
         partitioners(finest_level + 1);
       for (unsigned int level = 0; level <= finest_level; ++level)
@@ -354,8 +381,7 @@ namespace particulate {
           data.mg_level   = level;
           auto level_data = std::make_shared<MatrixFree<dim, float>>();
           level_data->reinit(mapping, dofs, constraints, QGauss<1>(3), data);
-          matrix_free[level] = level_data;
-          operators[level].initialize(level_data);
+          matrix_free[level]  = level_data;
           partitioners[level] = level_data->get_vector_partitioner();
           if (level == 0)
             coarse_constraints.copy_from(constraints);
@@ -364,49 +390,68 @@ namespace particulate {
       transfer.initialize_constraints(mg_constrained_dofs);
       transfer.build(dofs, partitioners);
 
-      // the coarse matrix's pattern
-      const IndexSet owned0 = dofs.locally_owned_mg_dofs(0);
+      // the coarse matrix's pattern and ML's near-null space
+      coarse_owned = dofs.locally_owned_mg_dofs(0);
       const IndexSet relevant0
         = DoFTools::extract_locally_relevant_level_dofs(dofs, 0);
-      TrilinosWrappers::SparsityPattern pattern(owned0,
-                                                owned0,
-                                                relevant0,
-                                                communicator);
-      MGTools::make_sparsity_pattern(dofs, pattern, 0);
-      pattern.compress();
-      coarse.matrix.reinit(pattern);
-      coarse.reinit(owned0, communicator);
-      coarse.constant_modes.assign(dim,
-                                   std::vector<bool>(owned0.n_elements(),
-                                                     false));
+      coarse_pattern
+        = std::make_unique<TrilinosWrappers::SparsityPattern>(coarse_owned,
+                                                              coarse_owned,
+                                                              relevant0,
+                                                              communicator);
+      MGTools::make_sparsity_pattern(dofs, *coarse_pattern, 0);
+      coarse_pattern->compress();
+      coarse_modes.assign(dim,
+                          std::vector<bool>(coarse_owned.n_elements(), false));
       std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
       for (const auto &cell : dofs.mg_cell_iterators_on_level(0))
         if (cell->is_locally_owned_on_level())
           {
             cell->get_mg_dof_indices(indices);
             for (unsigned int j = 0; j < indices.size(); ++j)
-              if (owned0.is_element(indices[j]))
-                coarse.constant_modes[fe.system_to_component_index(j).first]
-                                     [owned0.index_within_set(indices[j])]
+              if (coarse_owned.is_element(indices[j]))
+                coarse_modes[fe.system_to_component_index(j).first]
+                            [coarse_owned.index_within_set(indices[j])]
                   = true;
           }
+      // the hierarchies follow lazily, when a stage needs them
+      for (auto &h : hierarchies)
+        {
+          h.geometry_is_current = false;
+          h.linearised          = false;
+        }
+    }
 
-      mg_matrix.initialize(operators);
-      multigrid      = std::make_unique<Multigrid<LevelVector>>(mg_matrix,
-                                                           coarse,
-                                                           transfer,
-                                                           smoother,
-                                                           smoother,
-                                                           0,
-                                                           finest_level);
-      preconditioner = std::make_unique<
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::Implementation::prepare(Hierarchy &h)
+    {
+      if (h.geometry_is_current)
+        return;
+      h.operators.resize(0, finest_level);
+      for (unsigned int level = 0; level <= finest_level; ++level)
+        h.operators[level].initialize(matrix_free[level]);
+      h.operators[finest_level].set_masked_dofs(masked_level_dofs);
+      h.coarse.matrix.reinit(*coarse_pattern);
+      h.coarse.reinit(coarse_owned, communicator);
+      h.coarse.constant_modes = coarse_modes;
+      h.mg_matrix.initialize(h.operators);
+      h.multigrid      = std::make_unique<Multigrid<LevelVector>>(h.mg_matrix,
+                                                             h.coarse,
+                                                             transfer,
+                                                             h.smoother,
+                                                             h.smoother,
+                                                             0,
+                                                             finest_level);
+      h.preconditioner = std::make_unique<
         PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>(
         dofs,
-        *multigrid,
+        *h.multigrid,
         transfer);
-      linearised    = false;
-      current_mass  = -1.;
-      current_theta = -1.;
+      h.geometry_is_current = true;
+      h.linearised          = false;
     }
 
 
@@ -456,12 +501,29 @@ namespace particulate {
     {
       auto &m = *implementation;
       // With a constant viscosity the operator depends only on the stage
-      // (rho/k, theta_i): the hierarchy is kept while they stay.
+      // (rho/k, theta_i): a hierarchy built for them is kept.
       const bool variable_mu = viscosity_model.depends_on_shear_rate();
-      if (m.linearised && !variable_mu && m.current_mass == mass_coefficient
-          && m.current_theta == theta_implicit)
-        return;
+      ++m.n_uses;
+      if (!variable_mu)
+        for (unsigned int i = 0; i < m.hierarchies.size(); ++i)
+          {
+            auto &h = m.hierarchies[i];
+            if (h.geometry_is_current && h.linearised
+                && h.mass == mass_coefficient && h.theta == theta_implicit)
+              {
+                m.active   = i;
+                h.last_use = m.n_uses;
+                return;
+              }
+          }
+      // otherwise the least recently used one is rebuilt
+      unsigned int chosen = 0;
+      for (unsigned int i = 1; i < m.hierarchies.size(); ++i)
+        if (m.hierarchies[i].last_use < m.hierarchies[chosen].last_use)
+          chosen = i;
+      auto              &h = m.hierarchies[chosen];
       TimerOutput::Scope scope(m.timer, "fluid: velocity multigrid update");
+      m.prepare(h);
       MGLevelObject<LevelVector> level_velocity(0, m.finest_level);
       if (variable_mu)
         {
@@ -473,7 +535,7 @@ namespace particulate {
       MGLevelObject<SmootherData> smoother_data(0, m.finest_level);
       for (unsigned int level = 0; level <= m.finest_level; ++level)
         {
-          m.operators[level].set_coefficients(level_velocity[level],
+          h.operators[level].set_coefficients(level_velocity[level],
                                               mass_coefficient,
                                               theta_implicit,
                                               viscosity_model);
@@ -484,28 +546,30 @@ namespace particulate {
           data.smoothing_range     = 15.;
           data.eig_cg_n_iterations = 12;
           data.preconditioner
-            = m.operators[level].get_matrix_diagonal_inverse();
+            = h.operators[level].get_matrix_diagonal_inverse();
         }
-      m.smoother.initialize(m.operators, smoother_data);
+      h.smoother.initialize(h.operators, smoother_data);
 
-      m.coarse.matrix = 0.;
+      h.coarse.matrix = 0.;
       MatrixFreeTools::compute_matrix(
         *m.matrix_free[0],
         m.coarse_constraints,
-        m.coarse.matrix,
+        h.coarse.matrix,
         &Implementation::LevelOperator::cell_kernel,
-        &m.operators[0]);
+        &h.operators[0]);
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-      amg_data.constant_modes        = m.coarse.constant_modes;
+      amg_data.constant_modes        = h.coarse.constant_modes;
       amg_data.elliptic              = true;
       amg_data.higher_order_elements = true;
       amg_data.smoother_type         = "ILU";
       amg_data.smoother_sweeps       = 2;
       amg_data.aggregation_threshold = 0.02;
-      m.coarse.amg.initialize(m.coarse.matrix, amg_data);
-      m.linearised    = true;
-      m.current_mass  = mass_coefficient;
-      m.current_theta = theta_implicit;
+      h.coarse.amg.initialize(h.coarse.matrix, amg_data);
+      h.linearised = true;
+      h.mass       = mass_coefficient;
+      h.theta      = theta_implicit;
+      h.last_use   = m.n_uses;
+      m.active     = chosen;
     }
 
 
@@ -528,7 +592,10 @@ namespace particulate {
             m.masked_active_dofs.push_back(dof);
             level_dofs.push_back(m.active_to_level[dof - first]);
           }
-      m.operators[m.finest_level].set_masked_dofs(level_dofs);
+      m.masked_level_dofs = level_dofs;
+      for (auto &h : m.hierarchies)
+        if (h.geometry_is_current)
+          h.operators[m.finest_level].set_masked_dofs(level_dofs);
     }
 
 
@@ -540,7 +607,7 @@ namespace particulate {
       const TrilinosWrappers::MPI::Vector &src) const
     {
       auto &m = *implementation;
-      AssertThrow(m.linearised,
+      AssertThrow(m.hierarchies[m.active].linearised,
                   ExcMessage("VelocityMultigrid::vmult before "
                              "set_linearisation()"));
       std::copy(src.begin(), src.end(), m.fine_src.begin());
@@ -550,7 +617,7 @@ namespace particulate {
             0;
       for (const auto dof : m.masked_active_dofs)
         m.fine_src.local_element(dof - first) = 0.;
-      m.preconditioner->vmult(m.fine_dst, m.fine_src);
+      m.hierarchies[m.active].preconditioner->vmult(m.fine_dst, m.fine_src);
       for (const auto dof : m.masked_active_dofs)
         m.fine_dst.local_element(dof - first) = 0.;
       std::copy(m.fine_dst.begin(), m.fine_dst.end(), dst.begin());
@@ -571,12 +638,16 @@ namespace particulate {
     std::size_t
     VelocityMultigrid<dim>::memory_consumption() const
     {
-      const auto &m     = *implementation;
-      std::size_t bytes = m.transfer.memory_consumption()
-                          + m.coarse.matrix.memory_consumption()
-                          + m.dofs.memory_consumption();
-      for (unsigned int level = 0; level <= m.finest_level; ++level)
-        bytes += m.operators[level].memory_consumption();
+      const auto &m = *implementation;
+      std::size_t bytes
+        = m.transfer.memory_consumption() + m.dofs.memory_consumption();
+      for (const auto &h : m.hierarchies)
+        if (h.geometry_is_current)
+          {
+            bytes += h.coarse.matrix.memory_consumption();
+            for (unsigned int level = 0; level <= m.finest_level; ++level)
+              bytes += h.operators[level].memory_consumption();
+          }
       return bytes;
     }
 
