@@ -90,6 +90,8 @@ namespace particulate {
     NavierStokes<dim>::reset_preconditioners()
     {
       velocity_amg.reset();
+      if (velocity_multigrid)
+        velocity_multigrid->forget_linearisations();
       velocity_multigrid_is_current  = false;
       schur_approximation_is_current = false;
     }

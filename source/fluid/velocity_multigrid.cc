@@ -576,6 +576,16 @@ namespace particulate {
 
     template <int dim>
     void
+    VelocityMultigrid<dim>::forget_linearisations()
+    {
+      for (auto &h : implementation->hierarchies)
+        h.linearised = false;
+    }
+
+
+
+    template <int dim>
+    void
     VelocityMultigrid<dim>::set_masked_dofs(
       const std::vector<types::global_dof_index> &dofs)
     {

@@ -83,6 +83,15 @@ namespace particulate {
                         const double          theta_implicit,
                         const ViscosityModel &viscosity_model);
 
+      /**
+       * Drop the kept V-cycles (one per set of stage coefficients): the
+       * next set_linearisation() builds afresh, with the masked DoFs of
+       * then. A run does this at every checkpoint, so that it computes what
+       * a run restarted there computes.
+       */
+      void
+      forget_linearisations();
+
       /** Velocity DoFs (system numbering, locally relevant) that are
        *  constrained in addition to the boundary conditions: the nodes
        *  inside fictitious-boundary bodies. */
