@@ -16,6 +16,27 @@ namespace particulate {
   namespace fluid {
     using namespace dealii;
 
+    namespace {
+      /** The shear rate sqrt(2 D:D), D = (G + G^T)/2, of one SIMD lane of a
+       *  velocity gradient G. */
+      template <int dim>
+      double
+      shear_rate(const Tensor<2, dim, VectorizedArray<double>> &G,
+                 const unsigned int                             lane)
+      {
+        double DD = 0.;
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double D = 0.5 * (G[c][d][lane] + G[d][c][lane]);
+              DD += D * D;
+            }
+        return std::sqrt(2. * DD);
+      }
+    } // namespace
+
+
+
     template <int dim>
     struct MomentumOperator<dim>::Implementation
     {
@@ -231,20 +252,9 @@ namespace particulate {
               if (m.viscosity_per_point)
                 for (unsigned int lane = 0; lane < VectorizedArray::size();
                      ++lane)
-                  {
-                    // shear rate sqrt(2 D:D), D = (G + G^T)/2
-                    double DD = 0.;
-                    for (unsigned int c = 0; c < dim; ++c)
-                      for (unsigned int d = 0; d < dim; ++d)
-                        {
-                          const double D
-                            = 0.5 * (G[c][d][lane] + G[d][c][lane]);
-                          DD += D * D;
-                        }
-                    m.viscosity(cell, q)[lane]
-                      = theta_implicit
-                        * viscosity_model.viscosity(std::sqrt(2. * DD));
-                  }
+                  m.viscosity(cell, q)[lane]
+                    = theta_implicit
+                      * viscosity_model.viscosity(shear_rate<dim>(G, lane));
             }
         }
       m.linearised = true;
@@ -338,19 +348,9 @@ namespace particulate {
                   if (variable_mu)
                     for (unsigned int lane = 0; lane < VectorizedArray::size();
                          ++lane)
-                      {
-                        double DD = 0.;
-                        for (unsigned int c = 0; c < dim; ++c)
-                          for (unsigned int d = 0; d < dim; ++d)
-                            {
-                              const double D
-                                = 0.5 * (G[c][d][lane] + G[d][c][lane]);
-                              DD += D * D;
-                            }
-                        nu[lane]
-                          = theta
-                            * viscosity_model.viscosity(std::sqrt(2. * DD));
-                      }
+                      nu[lane]
+                        = theta
+                          * viscosity_model.viscosity(shear_rate<dim>(G, lane));
                   phi.submit_value(mass * value + convective * (G * advecting),
                                    q);
                   phi.submit_gradient(nu * (G + transpose(G)), q);

@@ -333,6 +333,22 @@ namespace particulate {
 
 
 
+    namespace {
+      /** The locally owned entries of a ghosted vector, as the matrix-free
+       *  operator reads them (by position in the owned range). */
+      TrilinosWrappers::MPI::Vector
+      owned_part(const TrilinosWrappers::MPI::Vector &ghosted,
+                 const IndexSet                      &owned,
+                 const MPI_Comm                       communicator)
+      {
+        TrilinosWrappers::MPI::Vector result(owned, communicator);
+        result = ghosted;
+        return result;
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     NavierStokes<dim>::linearise_momentum_operator(const Stage &stage,
@@ -344,10 +360,9 @@ namespace particulate {
       velocity = solution.block(0);
       TrilinosWrappers::MPI::Vector w;
       if (has_mesh_velocity)
-        {
-          w.reinit(owned_partitioning[0], communicator);
-          w = mesh_velocity.block(0);
-        }
+        w = owned_part(mesh_velocity.block(0),
+                       owned_partitioning[0],
+                       communicator);
       const double rho = parameters.properties.density;
       momentum_operator->set_linearisation(velocity,
                                            has_mesh_velocity ? &w : nullptr,
@@ -374,10 +389,9 @@ namespace particulate {
       const double                  te     = steady ? 0. : stage.theta_explicit;
       TrilinosWrappers::MPI::Vector w;
       if (has_mesh_velocity)
-        {
-          w.reinit(owned_partitioning[0], communicator);
-          w = mesh_velocity.block(0);
-        }
+        w = owned_part(mesh_velocity.block(0),
+                       owned_partitioning[0],
+                       communicator);
       if (!steady)
         {
           // -rho/k (u_old, v) + theta_e N(u_old) u_old
@@ -454,10 +468,9 @@ namespace particulate {
       u = solution.block(0);
       p = solution.block(1);
       if (has_mesh_velocity)
-        {
-          w.reinit(owned_partitioning[0], communicator);
-          w = mesh_velocity.block(0);
-        }
+        w = owned_part(mesh_velocity.block(0),
+                       owned_partitioning[0],
+                       communicator);
       // R_u = rho/k (u, v) + theta_i N(u) u + [explicit part] - (p, div v)
       momentum_operator->apply_nonlinear_form(system_rhs.block(0),
                                               u,
