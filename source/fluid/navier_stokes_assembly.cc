@@ -345,6 +345,13 @@ namespace particulate {
         result = ghosted;
         return result;
       }
+
+      /** rho/k of a stage's time derivative, 0 for the steady problem. */
+      double
+      mass_coefficient(const Stage &stage, const double density)
+      {
+        return stage.time_step == 0. ? 0. : density / stage.time_step;
+      }
     } // namespace
 
 
@@ -366,9 +373,7 @@ namespace particulate {
       const double rho = parameters.properties.density;
       momentum_operator->set_linearisation(velocity,
                                            has_mesh_velocity ? &w : nullptr,
-                                           stage.time_step == 0. ?
-                                             0. :
-                                             rho / stage.time_step,
+                                           mass_coefficient(stage, rho),
                                            stage.theta_implicit,
                                            rho,
                                            newton,
@@ -475,9 +480,7 @@ namespace particulate {
       momentum_operator->apply_nonlinear_form(system_rhs.block(0),
                                               u,
                                               has_mesh_velocity ? &w : nullptr,
-                                              stage.time_step == 0. ?
-                                                0. :
-                                                rho / stage.time_step,
+                                              mass_coefficient(stage, rho),
                                               stage.theta_implicit,
                                               rho,
                                               *viscosity_model);
