@@ -298,14 +298,16 @@ namespace particulate {
     void
     NavierStokes<dim>::setup_matrices()
     {
+      // preconditioners before the matrices they were built from: ML's
+      // ILU smoothers ask the matrix for its communicator when destroyed
+      velocity_amg.reset();
+      laplace_amg.reset();
+      mass_ilu.reset();
       system_matrix.clear();
       gradient_matrix.clear();
       constrained_gradient.clear();
       pressure_mass.clear();
       pressure_laplacian.clear();
-      velocity_amg.reset();
-      laplace_amg.reset();
-      mass_ilu.reset();
       schur_approximation_is_current = false;
 
       const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);

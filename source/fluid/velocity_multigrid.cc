@@ -434,6 +434,9 @@ namespace particulate {
       for (unsigned int level = 0; level <= finest_level; ++level)
         h.operators[level].initialize(matrix_free[level]);
       h.operators[finest_level].set_masked_dofs(masked_level_dofs);
+      // ML's ILU smoothers ask their matrix for its communicator when
+      // destroyed: the old hierarchy goes first
+      h.coarse.amg.clear();
       h.coarse.matrix.reinit(*coarse_pattern);
       h.coarse.reinit(coarse_owned, communicator);
       h.coarse.constant_modes = coarse_modes;
