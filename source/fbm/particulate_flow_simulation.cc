@@ -20,6 +20,7 @@
 #include <deal.II/base/timer.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -733,6 +734,7 @@ namespace particulate {
               // everything of a step but output and diagnostics
               std::optional<TimerOutput::Scope> step_scope;
               step_scope.emplace(timer, "coupled step (total)");
+              const auto step_start_time = std::chrono::steady_clock::now();
               move_with_bodies(t + dt, dt);
               if (predict_interface)
                 impose_predicted_interface(dt);
@@ -836,6 +838,10 @@ namespace particulate {
               if (!(prescribed || mesh_follows))
                 impose_particle_velocities();
               step_scope.reset();
+              summary.step_seconds.push_back(
+                std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                              - step_start_time)
+                  .count());
               record(t, dt, stats);
               const bool last = t >= time_p.end_time - eps;
               if ((flow_p.output.interval > 0
@@ -857,6 +863,12 @@ namespace particulate {
       summary.n_steps      = step;
       summary.end_time     = t;
       summary.wall_seconds = progress.elapsed_seconds();
+      MPI_Allreduce(MPI_IN_PLACE,
+                    summary.step_seconds.data(),
+                    static_cast<int>(summary.step_seconds.size()),
+                    MPI_DOUBLE,
+                    MPI_MAX,
+                    communicator);
       for (unsigned int i = 0; i < n; ++i)
         {
           const rigid::RigidBody &b = world.body(ids[i]);

@@ -66,6 +66,10 @@ namespace particulate {
       /// per particle, the largest speed reached and when [m/s, s]
       std::vector<double> max_speed, time_of_max_speed;
       double              wall_seconds = 0.;
+      /// wall seconds of each time step this run computed (its "coupled
+      /// step (total)" section, the slowest rank's); benchmarks separate
+      /// the first steps, which carry one-time set-ups, from the rest
+      std::vector<double> step_seconds;
     };
 
     /**
