@@ -718,7 +718,9 @@ namespace particulate {
       // limited. With ILU(0): 3.9 / 5.5 iterations. ILU(0) of the
       // symmetric L_p is symmetric, so the V-cycle stays a valid CG
       // preconditioner (doc/performance.md, "Pressure Laplacian: the AMG
-      // smoother").
+      // smoother"). On the 3D DFG channel it helps at level 1 but makes
+      // level 2 a third slower (flow-solver plan item 4 there): to become
+      // a choice of the .prm.
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
       amg_data.elliptic              = true;
       amg_data.higher_order_elements = false;
