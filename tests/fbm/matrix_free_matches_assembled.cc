@@ -120,18 +120,11 @@ main(int argc, char **argv)
                                     tight_dfg + fluid + matrix_free,
                                     MPI_COMM_WORLD,
                                     output + "_matrix_free");
-      checker.check_relative(operator_run.drag_coefficient,
-                             assembled.drag_coefficient,
-                             1e-9,
-                             label + ": c_D matrix-free against assembled");
-      checker.check_relative(operator_run.lift_coefficient,
-                             assembled.lift_coefficient,
-                             1e-8,
-                             label + ": c_L");
-      checker.check_relative(operator_run.pressure_difference,
-                             assembled.pressure_difference,
-                             1e-9,
-                             label + ": delta_p");
+      testing::check_coefficients(checker,
+                                  operator_run,
+                                  assembled,
+                                  {1e-9, 1e-8, 1e-9},
+                                  label + ", matrix-free against assembled");
       report(label, assembled, operator_run);
     }
 

@@ -39,18 +39,11 @@ main(int argc, char **argv)
     tight + " set Velocity preconditioner = Chebyshev\nend\n",
     MPI_COMM_SELF,
     "chebyshev_matches_amg_chebyshev");
-  checker.check_relative(chebyshev.drag_coefficient,
-                         amg.drag_coefficient,
-                         1e-8,
-                         "c_D with Chebyshev against AMG");
-  checker.check_relative(chebyshev.lift_coefficient,
-                         amg.lift_coefficient,
-                         1e-8,
-                         "c_L");
-  checker.check_relative(chebyshev.pressure_difference,
-                         amg.pressure_difference,
-                         1e-8,
-                         "delta_p");
+  testing::check_coefficients(checker,
+                              chebyshev,
+                              amg,
+                              {1e-8, 1e-8, 1e-8},
+                              "Chebyshev against AMG");
 
   bool refused = false;
   try

@@ -49,19 +49,12 @@ main(int argc, char **argv)
                                            case_name + "_serial");
       if (rank == 0)
         {
-          checker.check_relative(parallel.drag_coefficient,
-                                 serial.drag_coefficient,
-                                 1e-8,
-                                 case_name + ": c_D on "
-                                   + std::to_string(n_ranks) + " ranks");
-          checker.check_relative(parallel.lift_coefficient,
-                                 serial.lift_coefficient,
-                                 1e-8,
-                                 case_name + ": c_L");
-          checker.check_relative(parallel.pressure_difference,
-                                 serial.pressure_difference,
-                                 1e-8,
-                                 case_name + ": delta_p");
+          testing::check_coefficients(checker,
+                                      parallel,
+                                      serial,
+                                      {1e-8, 1e-8, 1e-8},
+                                      case_name + " on "
+                                        + std::to_string(n_ranks) + " ranks");
         }
       MPI_Barrier(MPI_COMM_WORLD);
     }

@@ -58,19 +58,12 @@ main(int argc, char **argv)
                                            "multigrid_amg_run");
     if (rank == 0)
       {
-        checker.check_relative(with_multigrid.drag_coefficient,
-                               with_amg.drag_coefficient,
-                               1e-8,
-                               "c_D with multigrid (all ranks) against AMG "
-                               "(serial)");
-        checker.check_relative(with_multigrid.lift_coefficient,
-                               with_amg.lift_coefficient,
-                               1e-8,
-                               "c_L");
-        checker.check_relative(with_multigrid.pressure_difference,
-                               with_amg.pressure_difference,
-                               1e-8,
-                               "delta_p");
+        testing::check_coefficients(
+          checker,
+          with_multigrid,
+          with_amg,
+          {1e-8, 1e-8, 1e-8},
+          "multigrid (all ranks) against AMG (serial)");
       }
   }
 

@@ -119,6 +119,35 @@ namespace particulate {
     private:
       bool failed = false;
     };
+
+    /** Relative tolerances of check_coefficients(). */
+    struct CoefficientTolerances
+    {
+      double drag, lift, pressure_difference;
+    };
+
+    /** c_D, c_L and delta_p of @p value against @p reference; @p label
+     *  names the comparison. */
+    inline void
+    check_coefficients(Checker                     &checker,
+                       const fluid::FlowRunSummary &value,
+                       const fluid::FlowRunSummary &reference,
+                       const CoefficientTolerances &tolerances,
+                       const std::string           &label)
+    {
+      checker.check_relative(value.drag_coefficient,
+                             reference.drag_coefficient,
+                             tolerances.drag,
+                             label + ": c_D");
+      checker.check_relative(value.lift_coefficient,
+                             reference.lift_coefficient,
+                             tolerances.lift,
+                             label + ": c_L");
+      checker.check_relative(value.pressure_difference,
+                             reference.pressure_difference,
+                             tolerances.pressure_difference,
+                             label + ": delta_p");
+    }
   } // namespace testing
 } // namespace particulate
 
