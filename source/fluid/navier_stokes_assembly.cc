@@ -709,8 +709,9 @@ namespace particulate {
       cells_are_blocks
         = Utilities::MPI::min(cells_are_blocks ? 1 : 0, communicator) == 1;
 
-      // Smoother: one ILU(0) sweep before and after the coarse correction.
-      // With the Jacobi-Chebyshev default the inner CG needed 14.7 / 23.5
+      // Smoother ('Pressure Laplacian smoother'): by default one ILU(0)
+      // sweep before and after the coarse correction. With the
+      // Jacobi-Chebyshev smoother the inner CG needed 14.7 / 23.5
       // iterations per solve at ten Cate r = 1 / 2; at r = 1 its coarse
       // level is already solved exactly (two levels: a W-cycle gives the
       // same counts), and the counts fell only in proportion to the
@@ -718,14 +719,20 @@ namespace particulate {
       // limited. With ILU(0): 3.9 / 5.5 iterations. ILU(0) of the
       // symmetric L_p is symmetric, so the V-cycle stays a valid CG
       // preconditioner (doc/performance.md, "Pressure Laplacian: the AMG
-      // smoother"). On the 3D DFG channel it helps at level 1 but makes
-      // level 2 a third slower (flow-solver plan item 4 there): to become
-      // a choice of the .prm.
+      // smoother"). On the 3D DFG channel at level 2 Chebyshev is faster.
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
       amg_data.elliptic              = true;
       amg_data.higher_order_elements = false;
-      amg_data.smoother_type         = "ILU";
-      amg_data.smoother_sweeps       = 1;
+      if (parameters.linear_solver.pressure_laplacian_smoother == "ILU")
+        {
+          amg_data.smoother_type   = "ILU";
+          amg_data.smoother_sweeps = 1;
+        }
+      else
+        {
+          amg_data.smoother_type   = "Chebyshev";
+          amg_data.smoother_sweeps = 2;
+        }
       amg_data.aggregation_threshold = 0.02;
       laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       if (cells_are_blocks)

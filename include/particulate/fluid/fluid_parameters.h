@@ -90,6 +90,9 @@ namespace particulate {
       /// "automatic", "Cahouet-Chabard" or "least-squares commutator"
       std::string schur_approximation        = "automatic";
       double      pressure_poisson_tolerance = 1e-2;
+      /// smoother of L_p's ML V-cycle: "ILU" (one ILU(0) sweep) or
+      /// "Chebyshev" (ML's Jacobi-Chebyshev, two sweeps)
+      std::string pressure_laplacian_smoother = "ILU";
       /// "AMG" or "Chebyshev" (Jacobi-Chebyshev polynomial, no hierarchy)
       std::string  velocity_preconditioner = "AMG";
       unsigned int chebyshev_degree        = 4;
