@@ -499,124 +499,33 @@ namespace particulate {
 
 
 
-    namespace {
-      /**
-       * Decoupled pressures (see NavierStokes::decoupled_pressure_dofs) have
-       * empty rows in B, hence in L_p = B D^{-1} B^T: the product does not
-       * even store their diagonal. The solver keeps them at zero; a unit
-       * row of the size of the others' diagonal keeps the multigrid
-       * hierarchy of L_p, and its direct coarse solve, well defined. Returns
-       * the product with those diagonals added, and in `first_flow_row` the
-       * lowest row (over all ranks) that was not empty: a pressure of the
-       * flow.
-       */
-      void
-      regularise_empty_pressure_rows(TrilinosWrappers::SparseMatrix &matrix,
-                                     types::global_dof_index &first_flow_row)
-      {
-        const IndexSet &owned        = matrix.locally_owned_range_indices();
-        const MPI_Comm  communicator = matrix.get_mpi_communicator();
-        // Epetra's row views: deal.II's row iterators copy a row per
-        // construction, far too slow for this O(nnz) pass on 1e5 rows.
-        const Epetra_CrsMatrix &product  = matrix.trilinos_matrix();
-        const auto              row_view = [&](const int local_row) {
-          int     n       = 0;
-          double *values  = nullptr;
-          int    *columns = nullptr;
-          product.ExtractMyRowView(local_row, n, values, columns);
-          return std::make_tuple(n, values, columns);
-        };
-        std::vector<double> diagonal(product.NumMyRows(), 0.);
-        double              largest = 0.;
-        for (int local = 0; local < product.NumMyRows(); ++local)
-          {
-            const auto [n, values, columns] = row_view(local);
-            const auto row = TrilinosWrappers::global_row_index(product, local);
-            for (int k = 0; k < n; ++k)
-              if (TrilinosWrappers::global_column_index(product, columns[k])
-                  == row)
-                diagonal[local] = values[k];
-            largest = std::max(largest, std::abs(diagonal[local]));
-          }
-        largest = Utilities::MPI::max(largest, communicator);
-
-        TrilinosWrappers::SparsityPattern
-          pattern(owned, matrix.locally_owned_domain_indices(), communicator);
-        first_flow_row = numbers::invalid_dof_index;
-        std::vector<types::global_dof_index> global_columns;
-        for (int local = 0; local < product.NumMyRows(); ++local)
-          {
-            const auto [n, values, columns] = row_view(local);
-            const auto row = TrilinosWrappers::global_row_index(product, local);
-            global_columns.assign(1, row);
-            for (int k = 0; k < n; ++k)
-              global_columns.push_back(
-                TrilinosWrappers::global_column_index(product, columns[k]));
-            std::sort(global_columns.begin(), global_columns.end());
-            global_columns.erase(std::unique(global_columns.begin(),
-                                             global_columns.end()),
-                                 global_columns.end());
-            pattern.add_entries(row,
-                                global_columns.begin(),
-                                global_columns.end(),
-                                true);
-            if (std::abs(diagonal[local]) > 1e-12 * largest)
-              first_flow_row
-                = std::min<types::global_dof_index>(first_flow_row, row);
-          }
-        pattern.compress();
-        first_flow_row = Utilities::MPI::min(first_flow_row, communicator);
-
-        TrilinosWrappers::SparseMatrix completed(pattern);
-        std::vector<TrilinosScalar>    row_values;
-        for (int local = 0; local < product.NumMyRows(); ++local)
-          {
-            const auto [n, values, columns] = row_view(local);
-            const auto row = TrilinosWrappers::global_row_index(product, local);
-            const bool empty = std::abs(diagonal[local]) <= 1e-12 * largest;
-            global_columns.assign(1, row);
-            row_values.assign(1, empty ? largest : diagonal[local]);
-            for (int k = 0; k < n; ++k)
-              {
-                const auto column
-                  = TrilinosWrappers::global_column_index(product, columns[k]);
-                if (column != row)
-                  {
-                    global_columns.push_back(column);
-                    row_values.push_back(values[k]);
-                  }
-              }
-            completed.set(row,
-                          global_columns.size(),
-                          global_columns.data(),
-                          row_values.data(),
-                          false);
-          }
-        completed.compress(VectorOperation::insert);
-        matrix.copy_from(completed);
-      }
-    } // namespace
-
-
-
     template <int dim>
     void
     NavierStokes<dim>::build_schur_complement_approximation()
     {
       TimerOutput::Scope scope(timer, "fluid: Schur approximation");
-      // the old V-cycle goes before its matrix is replaced: ML's ILU
-      // smoothers ask the matrix for its communicator when destroyed
-      laplace_amg.reset();
-      mass_ilu.reset();
       timer.enter_subsection("fluid: Schur approximation: L_p");
       // L_p = B diag(M_u)^{-1} B^T from the divergence blocks of the current
       // matrix (they do not depend on the iterate, only on mesh and
       // constraints). The sign convention B = -div makes L_p positive.
+      types::global_dof_index flow_row;
       if (momentum_operator)
         {
-          // B^T with what the constraints do to the assembled blocks:
-          // rows of constrained velocities and columns of decoupled
-          // pressures zero (diagonal scalings by 0/1 masks)
+          // constrained velocities split into those of the boundary
+          // conditions (mesh quantities, also where a body covers them) and
+          // those that only bodies constrain
+          std::vector<types::global_dof_index> mesh_fixed, covered;
+          for (const auto dof : constrained_velocity_dofs)
+            (std::binary_search(body_constrained_dofs.begin(),
+                                body_constrained_dofs.end(),
+                                dof) ?
+               covered :
+               mesh_fixed)
+              .push_back(dof);
+
+          // B^T of the outer operator: rows of constrained velocities and
+          // columns of decoupled pressures zero (diagonal scalings by 0/1
+          // masks)
           TrilinosWrappers::MPI::Vector free_velocity(owned_partitioning[0],
                                                       communicator);
           free_velocity = 1.;
@@ -639,16 +548,25 @@ namespace particulate {
             epetra.LeftScale(*free_velocity.trilinos_vector()(0)) == 0
               && epetra.RightScale(*free_pressure.trilinos_vector()(0)) == 0,
             ExcMessage("Epetra could not scale B^T."));
-          constrained_gradient.Tmmult(pressure_laplacian,
-                                      constrained_gradient,
-                                      inverse_lumped_mass);
+
+          // ML's ILU smoothers ask the matrix for its communicator when
+          // destroyed: the old V-cycle goes before its matrix changes
+          laplace_amg.reset();
+          flow_row = pressure_laplacian_update.update(pressure_laplacian,
+                                                      gradient_matrix,
+                                                      inverse_lumped_mass,
+                                                      mesh_fixed,
+                                                      covered,
+                                                      free_pressure);
         }
       else
-        system_matrix.block(1, 0).mmult(pressure_laplacian,
-                                        system_matrix.block(0, 1),
-                                        inverse_lumped_mass);
-      types::global_dof_index flow_row;
-      regularise_empty_pressure_rows(pressure_laplacian, flow_row);
+        {
+          laplace_amg.reset();
+          system_matrix.block(1, 0).mmult(pressure_laplacian,
+                                          system_matrix.block(0, 1),
+                                          inverse_lumped_mass);
+          regularise_empty_pressure_rows(pressure_laplacian, flow_row);
+        }
       if (!parameters.boundary_conditions.pressure_is_determined())
         {
           // Enclosed flow: L_p is singular (constant pressures). Pinning one
@@ -667,6 +585,19 @@ namespace particulate {
 
       TimerOutput::Scope amg_scope(timer,
                                    "fluid: Schur approximation: AMG set-up");
+      if (!mass_ilu) // M_p changes with the mesh only
+        {
+          mass_ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
+          mass_ilu->initialize(pressure_mass.block(1, 1));
+        }
+      // A new V-cycle for every new L_p (the old one went above). Two
+      // ways to save its set-up did not pay at ten Cate level 2 (issue 8
+      // item 12 in doc/performance.md): recomputing it on its aggregates
+      // (PreconditionAMG::reinit) cost as much as a new build (0.95 s
+      // against 0.84 s; the ILU factorisations and Galerkin products
+      // dominate, not the aggregation), and keeping the old V-cycle for
+      // the updated L_p tripled the CG iterations (6.3 -> 18.7 per solve):
+      // a pressure freed by the body was an isolated row in the old one.
       // Near-null space for ML. L_p's is the constant pressure, i.e. the
       // constant mode's DoF of every cell (1) and none of the linear modes
       // (0). Given alone, an aggregate of linear-mode DoFs only (left where
@@ -756,9 +687,6 @@ namespace particulate {
               << (cells_are_blocks ? "aggregation by cells, constant mode" :
                                      "one near-null vector per pressure mode")
               << std::endl;
-
-      mass_ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
-      mass_ilu->initialize(pressure_mass.block(1, 1));
       schur_approximation_is_current = true;
     }
 

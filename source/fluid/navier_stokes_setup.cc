@@ -217,13 +217,20 @@ namespace particulate {
           // Fictitious boundary (thesis eq. 5.17): u = U + omega x (x - X)
           // at the velocity nodes inside bodies. The boundary conditions
           // and hanging nodes come first and keep their rows.
+          if (homogeneous)
+            body_constrained_dofs.clear();
           for (const auto &[dof, value] : fictitious_boundary_values)
             if (c.can_store_line(dof) && !c.is_constrained(dof))
               {
                 c.add_line(dof);
                 if (!homogeneous)
                   c.set_inhomogeneity(dof, value);
+                else
+                  body_constrained_dofs.push_back(dof);
               }
+          if (homogeneous)
+            std::sort(body_constrained_dofs.begin(),
+                      body_constrained_dofs.end());
           c.close();
         }
       std::vector<types::global_dof_index> prescribed;
@@ -308,6 +315,7 @@ namespace particulate {
       constrained_gradient.clear();
       pressure_mass.clear();
       pressure_laplacian.clear();
+      pressure_laplacian_update.clear();
       schur_approximation_is_current = false;
 
       const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
@@ -375,6 +383,10 @@ namespace particulate {
     void
     NavierStokes<dim>::assemble_geometric_matrices()
     {
+      // B, M_p and the lumped velocity mass change: what was built from
+      // them goes (preconditioners before their matrices)
+      mass_ilu.reset();
+      pressure_laplacian_update.clear();
       pressure_mass                  = 0.;
       schur_approximation_is_current = false;
       const bool with_gradient       = momentum_operator != nullptr;
@@ -633,6 +645,7 @@ namespace particulate {
                    + pressure_mass.block(i, j).memory_consumption();
       if (pressure_laplacian.m() > 0)
         bytes += pressure_laplacian.memory_consumption();
+      bytes += pressure_laplacian_update.memory_consumption();
       if (velocity_amg)
         bytes += velocity_amg->memory_consumption();
       if (laplace_amg)

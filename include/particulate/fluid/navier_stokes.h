@@ -3,6 +3,7 @@
 
 #include <particulate/core/simulation_parameters.h>
 #include <particulate/fluid/fluid_parameters.h>
+#include <particulate/fluid/pressure_laplacian.h>
 #include <particulate/fluid/velocity_multigrid.h>
 #include <particulate/fluid/viscosity_model.h>
 
@@ -378,12 +379,18 @@ namespace particulate {
       dealii::TrilinosWrappers::SparseMatrix constrained_gradient;
       /// locally owned constrained velocity DoFs (matrix-free operator)
       std::vector<dealii::types::global_dof_index> constrained_velocity_dofs;
+      /// the velocity DoFs that only bodies constrain (covered nodes not on
+      /// a Dirichlet or free-slip boundary), sorted
+      std::vector<dealii::types::global_dof_index> body_constrained_dofs;
       /// the stage's explicit part of R_u (matrix-free operator)
       dealii::TrilinosWrappers::MPI::Vector explicit_residual;
       /// pressure mass matrix M_p in block (1,1); other blocks empty
       dealii::TrilinosWrappers::BlockSparseMatrix pressure_mass;
       /// L_p = B diag(M_u)^{-1} B^T, rebuilt when B changes
       dealii::TrilinosWrappers::SparseMatrix pressure_laplacian;
+      /// its in-place update when only the covered nodes change
+      /// (matrix-free velocity operator)
+      PressureLaplacian pressure_laplacian_update;
       /// 1 / (row sums of the velocity mass matrix), velocity block layout
       dealii::TrilinosWrappers::MPI::Vector inverse_lumped_mass;
       bool        schur_approximation_is_current = false;
