@@ -68,8 +68,11 @@ namespace particulate {
       }
 
       /// `matrix` with a (zero) diagonal entry added in every row that
-      /// stores none: a new matrix where one was missing (collective)
-      void
+      /// stores none: a new matrix where one was missing (collective).
+      /// Returns the diagonal_positions() of the result, so that callers
+      /// need not search the rows again (the search is about half the cost
+      /// of an L_p update).
+      std::vector<int>
       store_every_diagonal(TrilinosWrappers::SparseMatrix &matrix)
       {
         const auto position = diagonal_positions(matrix.trilinos_matrix());
@@ -77,7 +80,7 @@ namespace particulate {
           = std::find(position.begin(), position.end(), -1) == position.end();
         if (Utilities::MPI::min(complete ? 1 : 0, matrix.get_mpi_communicator())
             == 1)
-          return;
+          return position;
         const Epetra_CrsMatrix           &source = matrix.trilinos_matrix();
         TrilinosWrappers::SparsityPattern pattern(
           matrix.locally_owned_range_indices(),
@@ -125,6 +128,7 @@ namespace particulate {
           }
         completed.compress(VectorOperation::insert);
         matrix.copy_from(completed);
+        return diagonal_positions(matrix.trilinos_matrix());
       }
 
       /// (D^{-1/2} S B^T) with S selecting the rows `rows` (owned, sorted):
@@ -220,11 +224,10 @@ namespace particulate {
     regularise_empty_pressure_rows(TrilinosWrappers::SparseMatrix &matrix,
                                    types::global_dof_index &first_flow_row)
     {
-      const MPI_Comm communicator = matrix.get_mpi_communicator();
-      store_every_diagonal(matrix);
-      Epetra_CrsMatrix &product  = writable(matrix);
-      const auto        position = diagonal_positions(product);
-      double            largest  = 0.;
+      const MPI_Comm    communicator = matrix.get_mpi_communicator();
+      const auto        position     = store_every_diagonal(matrix);
+      Epetra_CrsMatrix &product      = writable(matrix);
+      double            largest      = 0.;
       for (int local = 0; local < product.NumMyRows(); ++local)
         {
           const auto [n, values, columns] = row_view(product, local);
