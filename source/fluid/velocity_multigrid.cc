@@ -51,6 +51,8 @@ namespace particulate {
       public:
         TrilinosWrappers::SparseMatrix    matrix;
         TrilinosWrappers::PreconditionAMG amg;
+        /// the coarse solves' share of the V-cycle, in the run's profile
+        TimerOutput *timer = nullptr;
         /// near-null space of the coarse matrix for ML: one constant mode
         /// per velocity component (locally owned rows)
         std::vector<std::vector<bool>> constant_modes;
@@ -68,6 +70,7 @@ namespace particulate {
                    LevelVector       &dst,
                    const LevelVector &src) const override
         {
+          TimerOutput::Scope scope(*timer, "fluid: velocity coarse solve");
           for (unsigned int i = 0; i < src.locally_owned_size(); ++i)
             rhs.begin()[i] = src.local_element(i);
           solution = 0.;
@@ -441,6 +444,7 @@ namespace particulate {
       h.coarse.amg.clear();
       h.coarse.matrix.reinit(*coarse_pattern);
       h.coarse.reinit(coarse_owned, communicator);
+      h.coarse.timer          = &timer;
       h.coarse.constant_modes = coarse_modes;
       h.mg_matrix.initialize(h.operators);
       h.multigrid      = std::make_unique<Multigrid<LevelVector>>(h.mg_matrix,
