@@ -51,18 +51,20 @@ namespace particulate {
       public:
         TrilinosWrappers::SparseMatrix    matrix;
         TrilinosWrappers::PreconditionAMG amg;
-        /// the coarse solves' share of the V-cycle, in the run's profile
-        TimerOutput *timer = nullptr;
         /// near-null space of the coarse matrix for ML: one constant mode
         /// per velocity component (locally owned rows)
         std::vector<std::vector<bool>> constant_modes;
 
-        /** The coarse level's locally owned DoFs. */
+        /** The coarse level's locally owned DoFs, and the run's timer, in
+         *  whose profile the coarse solves get their own line. */
         void
-        reinit(const IndexSet &owned, const MPI_Comm communicator)
+        reinit(const IndexSet &owned,
+               const MPI_Comm  communicator,
+               TimerOutput    &run_timer)
         {
           rhs.reinit(owned, communicator);
           solution.reinit(owned, communicator);
+          timer = &run_timer;
         }
 
         void
@@ -91,6 +93,7 @@ namespace particulate {
 
       private:
         mutable TrilinosWrappers::MPI::Vector rhs, solution;
+        TimerOutput                          *timer = nullptr;
       };
     } // namespace
 
@@ -443,8 +446,7 @@ namespace particulate {
       // destroyed: the old hierarchy goes first
       h.coarse.amg.clear();
       h.coarse.matrix.reinit(*coarse_pattern);
-      h.coarse.reinit(coarse_owned, communicator);
-      h.coarse.timer          = &timer;
+      h.coarse.reinit(coarse_owned, communicator, timer);
       h.coarse.constant_modes = coarse_modes;
       h.mg_matrix.initialize(h.operators);
       h.multigrid      = std::make_unique<Multigrid<LevelVector>>(h.mg_matrix,
