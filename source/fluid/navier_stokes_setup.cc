@@ -140,6 +140,13 @@ namespace particulate {
                                         bc.dirichlet.end());
           settings.free_slip_ids   = bc.free_slip;
           settings.smoother_degree = parameters.linear_solver.chebyshev_degree;
+          const auto &coarse = parameters.linear_solver.multigrid_coarse_solver;
+          settings.coarse_solver
+            = coarse == "Chebyshev" ?
+                VelocityMultigrid<dim>::CoarseSolve::chebyshev :
+                (coarse == "CG + AMG" ?
+                   VelocityMultigrid<dim>::CoarseSolve::cg_amg :
+                   VelocityMultigrid<dim>::CoarseSolve::automatic);
           velocity_multigrid
             = std::make_unique<VelocityMultigrid<dim>>(dof_handler,
                                                        owned_partitioning[0],

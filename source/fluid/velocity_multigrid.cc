@@ -39,16 +39,40 @@ namespace particulate {
       using LevelVector = LinearAlgebra::distributed::Vector<float>;
 
       /**
-       * The coarse level: its matrix (computed from the level operator's
-       * cell kernel) solved by conjugate gradients with one ML AMG cycle
-       * as the preconditioner, to a loose tolerance. The coarse mesh is
-       * the unrefined input mesh: small, so a few CG steps are cheap, and
-       * an accurate coarse solve keeps the V-cycle independent of how
-       * coarse that mesh is.
+       * The coarse level (the unrefined input mesh), solved one of two ways:
+       *
+       * - a Chebyshev polynomial of the matrix-free level operator around
+       *   its diagonal, of the degree that reduces the error by
+       *   coarse_chebyshev_reduction over the eigenvalue range a few Lanczos
+       *   steps estimate. When the mass term dominates (time steps of a few
+       *   ms on the mm-sized cells of a sedimentation box) the Jacobi-scaled
+       *   operator is about as well conditioned as the Q2 mass matrix and a
+       *   polynomial of degree 4-6 does what the assembled path does (same
+       *   FGMRES iterations), at a fraction of its cost: one ML cycle on the
+       *   assembled Q2 matrix (~375 entries per row in 3D) costs as much as
+       *   tens of matrix-free products on that level;
+       * - its matrix, computed from the level operator's cell kernel,
+       *   solved by CG with one ML AMG cycle as the preconditioner to a
+       *   loose tolerance, when the polynomial would need a high degree:
+       *   steady or viscous-dominated flow on a coarse mesh of many cells,
+       *   where the level operator carries the viscous part's h^-2
+       *   condition number.
+       *
+       * Either way the coarse solve is accurate enough to keep the V-cycle
+       * independent of how coarse that mesh is. A mesh without refinement
+       * has no other level: there the coarse solve is the whole V-cycle.
        */
+      template <int dim>
       class CoarseSolver : public MGCoarseGridBase<LevelVector>
       {
       public:
+        using Chebyshev
+          = PreconditionChebyshev<MassViscousOperator<dim, float>, LevelVector>;
+
+        /// the polynomial, when chosen (use_chebyshev)
+        Chebyshev chebyshev;
+        bool      use_chebyshev = false;
+
         TrilinosWrappers::SparseMatrix    matrix;
         TrilinosWrappers::PreconditionAMG amg;
         /// near-null space of the coarse matrix for ML: one constant mode
@@ -72,7 +96,16 @@ namespace particulate {
                    LevelVector       &dst,
                    const LevelVector &src) const override
         {
-          TimerOutput::Scope scope(*timer, "fluid: velocity coarse solve");
+          if (use_chebyshev)
+            {
+              TimerOutput::Scope scope(
+                *timer,
+                "fluid: velocity coarse solve (Chebyshev)");
+              chebyshev.vmult(dst, src);
+              return;
+            }
+          TimerOutput::Scope scope(*timer,
+                                   "fluid: velocity coarse solve (CG + ML)");
           for (unsigned int i = 0; i < src.locally_owned_size(); ++i)
             rhs.begin()[i] = src.local_element(i);
           solution = 0.;
@@ -158,7 +191,7 @@ namespace particulate {
         MGLevelObject<LevelOperator>                                 operators;
         MGSmootherPrecondition<LevelOperator, Smoother, LevelVector> smoother;
         mg::Matrix<LevelVector>                                      mg_matrix;
-        CoarseSolver                                                 coarse;
+        CoarseSolver<dim>                                            coarse;
         std::unique_ptr<Multigrid<LevelVector>>                      multigrid;
         std::unique_ptr<
           PreconditionMG<dim, LevelVector, MGTransferMatrixFree<dim, float>>>
@@ -175,6 +208,12 @@ namespace particulate {
       /** Level operators and V-cycle of @p h on the current geometry. */
       void
       prepare(Hierarchy &h);
+
+      /** The coarse solve of @p h for its current coefficients: Chebyshev
+       *  if its degree for the wanted reduction stays at most
+       *  max_coarse_chebyshev_degree, CG + ML otherwise. */
+      void
+      build_coarse_solver(Hierarchy &h);
 
       mutable FineVector fine_src, fine_dst;
     };
@@ -445,7 +484,8 @@ namespace particulate {
       // ML's ILU smoothers ask their matrix for its communicator when
       // destroyed: the old hierarchy goes first
       h.coarse.amg.clear();
-      h.coarse.matrix.reinit(*coarse_pattern);
+      h.coarse.matrix.clear();
+      h.coarse.use_chebyshev = false;
       h.coarse.reinit(coarse_owned, communicator, timer);
       h.coarse.constant_modes = coarse_modes;
       h.mg_matrix.initialize(h.operators);
@@ -463,6 +503,71 @@ namespace particulate {
         transfer);
       h.geometry_is_current = true;
       h.linearised          = false;
+    }
+
+
+
+    namespace {
+      /*
+       * The error reduction asked of the coarse Chebyshev polynomial, and
+       * the largest degree that 'automatic' accepts. On the ten Cate E4
+       * quarter box (bench_coupled_step, level 1, Crank-Nicolson, dt = 1
+       * ms; doc/performance.md, "What it takes to reach 35 us", item 0)
+       * reductions 0.3, 0.1 and 0.01 gave degrees 4, 6 and 10 and the same
+       * 6.3 FGMRES iterations per step as CG + AMG to 1e-3; one CG + AMG
+       * solve there costs about 40 matrix-free products on the coarse
+       * level, so a polynomial of degree up to 30 is still the cheaper one.
+       */
+      constexpr double       coarse_chebyshev_reduction  = 0.1;
+      constexpr unsigned int max_coarse_chebyshev_degree = 30;
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::Implementation::build_coarse_solver(Hierarchy &h)
+    {
+      // ML's ILU smoothers ask their matrix for its communicator when
+      // destroyed: the old hierarchy goes before its matrix
+      h.coarse.amg.clear();
+      h.coarse.use_chebyshev = false;
+      if (settings.coarse_solver != CoarseSolve::cg_amg)
+        {
+          typename CoarseSolver<dim>::Chebyshev::AdditionalData data;
+          data.degree          = numbers::invalid_unsigned_int;
+          data.smoothing_range = coarse_chebyshev_reduction;
+          // the level is small: enough Lanczos steps for a fair lambda_min
+          data.eig_cg_n_iterations = 30;
+          data.preconditioner = h.operators[0].get_matrix_diagonal_inverse();
+          h.coarse.chebyshev.initialize(h.operators[0], data);
+          LevelVector layout;
+          h.operators[0].initialize_dof_vector(layout);
+          const auto estimate = h.coarse.chebyshev.estimate_eigenvalues(layout);
+          h.coarse.use_chebyshev
+            = settings.coarse_solver == CoarseSolve::chebyshev
+              || estimate.degree <= max_coarse_chebyshev_degree;
+        }
+      if (h.coarse.use_chebyshev)
+        {
+          h.coarse.matrix.clear();
+          return;
+        }
+
+      h.coarse.matrix.reinit(*coarse_pattern);
+      MatrixFreeTools::compute_matrix(*matrix_free[0],
+                                      coarse_constraints,
+                                      h.coarse.matrix,
+                                      &LevelOperator::cell_kernel,
+                                      &h.operators[0]);
+      TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+      amg_data.constant_modes        = h.coarse.constant_modes;
+      amg_data.elliptic              = true;
+      amg_data.higher_order_elements = true;
+      amg_data.smoother_type         = "ILU";
+      amg_data.smoother_sweeps       = 2;
+      amg_data.aggregation_threshold = 0.02;
+      h.coarse.amg.initialize(h.coarse.matrix, amg_data);
     }
 
 
@@ -568,21 +673,7 @@ namespace particulate {
         }
       h.smoother.initialize(h.operators, smoother_data);
 
-      h.coarse.matrix = 0.;
-      MatrixFreeTools::compute_matrix(
-        *m.matrix_free[0],
-        m.coarse_constraints,
-        h.coarse.matrix,
-        &Implementation::LevelOperator::cell_kernel,
-        &h.operators[0]);
-      TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-      amg_data.constant_modes        = h.coarse.constant_modes;
-      amg_data.elliptic              = true;
-      amg_data.higher_order_elements = true;
-      amg_data.smoother_type         = "ILU";
-      amg_data.smoother_sweeps       = 2;
-      amg_data.aggregation_threshold = 0.02;
-      h.coarse.amg.initialize(h.coarse.matrix, amg_data);
+      m.build_coarse_solver(h);
       h.linearised = true;
       h.mass       = mass_coefficient;
       h.theta      = theta_implicit;

@@ -98,11 +98,14 @@ namespace particulate {
       unsigned int chebyshev_degree        = 4;
       /// "assembled" or "matrix-free" (the velocity block of the outer
       /// FGMRES operator)
-      std::string  velocity_operator   = "assembled";
-      bool         amg_elliptic        = true;
-      std::string  amg_smoother        = "Chebyshev";
-      unsigned int amg_smoother_sweeps = 2;
-      bool         verbose             = false;
+      std::string velocity_operator = "assembled";
+      /// coarse solve of the velocity V-cycle: "automatic", "Chebyshev"
+      /// or "CG + AMG"
+      std::string  multigrid_coarse_solver = "automatic";
+      bool         amg_elliptic            = true;
+      std::string  amg_smoother            = "Chebyshev";
+      unsigned int amg_smoother_sweeps     = 2;
+      bool         verbose                 = false;
 
       static void
       declare(dealii::ParameterHandler &prm);

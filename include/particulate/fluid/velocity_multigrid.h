@@ -32,9 +32,11 @@ namespace particulate {
      *   shear-rate dependent viscosity the linearisation point is
      *   interpolated from the fine mesh to every level.
      * - Smoother: a Chebyshev polynomial around the (mass + viscous)
-     *   diagonal, eigenvalues from a few Lanczos steps. Coarse level: its
-     *   matrix, computed from the same cell kernel, solved by CG with ML
-     *   AMG.
+     *   diagonal, eigenvalues from a few Lanczos steps. Coarse level: a
+     *   Chebyshev polynomial of higher degree as an approximate inverse
+     *   when the level operator is well conditioned (mass-dominated), else
+     *   its matrix, computed from the same cell kernel, solved by CG with
+     *   ML AMG (Settings::coarse_solver).
      * - Dirichlet boundaries are zero on all levels; free-slip planes (which
      *   must be normal to a coordinate axis) fix the normal component; DoFs
      *   inside fictitious-boundary bodies act as identity rows on the finest
@@ -44,6 +46,14 @@ namespace particulate {
     class VelocityMultigrid
     {
     public:
+      /** How the coarse level is solved (see velocity_multigrid.cc). */
+      enum class CoarseSolve
+      {
+        automatic, ///< Chebyshev when its degree is small, else CG + AMG
+        chebyshev,
+        cg_amg
+      };
+
       struct Settings
       {
         /// boundary ids where the velocity is prescribed
@@ -52,6 +62,7 @@ namespace particulate {
         std::vector<unsigned int> free_slip_ids;
         /// Chebyshev degree of the smoother (pre- and post-smoothing)
         unsigned int smoother_degree = 4;
+        CoarseSolve  coarse_solver   = CoarseSolve::automatic;
       };
 
       /**
