@@ -46,6 +46,35 @@ namespace {
            / static_cast<double>(run.nonlinear_iterations);
   }
 
+  /** @p label: the coarse level of @p run was solved by the path of timer
+   *  section @p used alone. */
+  void
+  check_coarse_path(testing::Checker            &checker,
+                    const fluid::FlowRunSummary &run,
+                    const std::string           &used,
+                    const std::string           &unused,
+                    const std::string           &label)
+  {
+    checker.check(calls(run, used) > 0. && calls(run, unused) == 0., label);
+  }
+
+  /** What 'automatic' chose, and the FGMRES iterations per Newton step
+   *  against the run with the coarse solve forced to @p other_name. */
+  void
+  report(const std::string           &label,
+         const fluid::FlowRunSummary &automatic,
+         const fluid::FlowRunSummary &other,
+         const std::string           &other_name)
+  {
+    std::cout << label << ": coarse solves Chebyshev "
+              << calls(automatic, chebyshev_section) << ", CG + AMG "
+              << calls(automatic, cg_amg_section)
+              << " (automatic); FGMRES iterations per Newton step "
+              << iterations_per_newton_step(automatic) << " (automatic), "
+              << iterations_per_newton_step(other) << " (" << other_name << ")"
+              << std::endl;
+  }
+
   std::string
   coarse_solver(const std::string &choice)
   {
@@ -85,21 +114,19 @@ main(int argc, char **argv)
                                   MPI_COMM_WORLD,
                                   "coarse_solve_unsteady_cg_amg");
     if (rank == 0)
-      std::cout << "DFG 2D-2: coarse solves Chebyshev "
-                << calls(automatic, chebyshev_section) << ", CG + AMG "
-                << calls(automatic, cg_amg_section)
-                << " (automatic); FGMRES iterations per Newton step "
-                << iterations_per_newton_step(automatic) << " (automatic), "
-                << iterations_per_newton_step(cg_amg) << " (CG + AMG)"
-                << std::endl;
-    checker.check(calls(automatic, chebyshev_section) > 0.
-                    && calls(automatic, cg_amg_section) == 0.,
-                  "DFG 2D-2: automatic solves the coarse level with the "
-                  "Chebyshev polynomial only");
-    checker.check(calls(cg_amg, cg_amg_section) > 0.
-                    && calls(cg_amg, chebyshev_section) == 0.,
-                  "DFG 2D-2: 'CG + AMG' solves the coarse level with CG + "
-                  "AMG only");
+      report("DFG 2D-2", automatic, cg_amg, "CG + AMG");
+    check_coarse_path(checker,
+                      automatic,
+                      chebyshev_section,
+                      cg_amg_section,
+                      "DFG 2D-2: automatic solves the coarse level with the "
+                      "Chebyshev polynomial only");
+    check_coarse_path(checker,
+                      cg_amg,
+                      cg_amg_section,
+                      chebyshev_section,
+                      "DFG 2D-2: 'CG + AMG' solves the coarse level with CG "
+                      "+ AMG only");
     testing::check_coefficients(checker,
                                 automatic,
                                 cg_amg,
@@ -138,21 +165,19 @@ main(int argc, char **argv)
                                   MPI_COMM_WORLD,
                                   "coarse_solve_steady_chebyshev");
     if (rank == 0)
-      std::cout << "steady half channel: coarse solves Chebyshev "
-                << calls(automatic, chebyshev_section) << ", CG + AMG "
-                << calls(automatic, cg_amg_section)
-                << " (automatic); FGMRES iterations per Newton step "
-                << iterations_per_newton_step(automatic) << " (automatic), "
-                << iterations_per_newton_step(chebyshev)
-                << " (Chebyshev forced)" << std::endl;
-    checker.check(calls(automatic, cg_amg_section) > 0.
-                    && calls(automatic, chebyshev_section) == 0.,
-                  "steady half channel: automatic solves the coarse level "
-                  "with CG + AMG only");
-    checker.check(calls(chebyshev, chebyshev_section) > 0.
-                    && calls(chebyshev, cg_amg_section) == 0.,
-                  "steady half channel: 'Chebyshev' solves the coarse "
-                  "level with the polynomial only");
+      report("steady half channel", automatic, chebyshev, "Chebyshev forced");
+    check_coarse_path(checker,
+                      automatic,
+                      cg_amg_section,
+                      chebyshev_section,
+                      "steady half channel: automatic solves the coarse "
+                      "level with CG + AMG only");
+    check_coarse_path(checker,
+                      chebyshev,
+                      chebyshev_section,
+                      cg_amg_section,
+                      "steady half channel: 'Chebyshev' solves the coarse "
+                      "level with the polynomial only");
     checker.check_relative(chebyshev.pressure_difference,
                            automatic.pressure_difference,
                            1e-8,
