@@ -19,7 +19,7 @@ namespace particulate {
         = "fbm::FictitiousBoundary: the cuda/ containment engine marks the "
           "nodes inside the bodies only ('Covered nodes = inside' in "
           "subsection 'Particles'); use 'Containment backend = cpu' for "
-          "'nearest'.";
+          "'halfway' or 'nearest'.";
     } // namespace
 
     template <int dim>
@@ -41,8 +41,9 @@ namespace particulate {
     {
       if (engine && m != Marking::inside)
         throw std::invalid_argument(engine_marks_inside_only);
-      const bool needs_spacing = m == Marking::nearest && marking != m;
-      marking                  = m;
+      const bool needs_spacing
+        = m != Marking::inside && marking == Marking::inside;
+      marking = m;
       if (needs_spacing && !positions.empty())
         make_half_spacing_consistent();
     }
@@ -137,7 +138,7 @@ namespace particulate {
                   nodes_of_cells.push_back(it->second);
               }
           }
-      if (marking == Marking::nearest)
+      if (marking != Marking::inside)
         make_half_spacing_consistent();
       grid = std::make_unique<geometry::PointHashGrid>(positions);
       node_body.assign(positions.size(), -1);
@@ -178,6 +179,24 @@ namespace particulate {
 
 
     template <int dim>
+    double
+    FictitiousBoundary<dim>::reach_fraction() const
+    {
+      switch (marking)
+        {
+          case Marking::inside:
+            return 0.;
+          case Marking::halfway:
+            return 0.5;
+          case Marking::nearest:
+            return 1.;
+        }
+      return 0.;
+    }
+
+
+
+    template <int dim>
     void
     FictitiousBoundary<dim>::classify(const std::vector<Body> &bodies)
     {
@@ -187,14 +206,14 @@ namespace particulate {
           return;
         }
       std::fill(node_body.begin(), node_body.end(), -1);
+      const double fraction = reach_fraction();
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           const rigid::RigidBody &body = *bodies[b].body;
           // the ball of the body, enlarged by the marking's reach and
           // slightly against rounding; in 2D the nodes lie in the plane z = 0
-          const double reach
-            = marking == Marking::nearest ? largest_half_spacing : 0.;
-          const double r = (bodies[b].radius + reach) * (1. + 1e-9) + 1e-14;
+          const double reach = fraction * largest_half_spacing;
+          const double r     = (bodies[b].radius + reach) * (1. + 1e-9) + 1e-14;
           geometry::BoundingBox box;
           box.lower = body.position - Eigen::Vector3d::Constant(r);
           box.upper = body.position + Eigen::Vector3d::Constant(r);
@@ -204,8 +223,7 @@ namespace particulate {
               box.upper[2] = r;
             }
           grid->for_each_in_box(box, [&](const std::size_t i) {
-            const double tolerance
-              = marking == Marking::nearest ? half_spacing[i] : 0.;
+            const double tolerance = fraction * half_spacing[i];
             if (node_body[i] < 0
                 && body.signed_distance(positions[i]) <= tolerance)
               node_body[i] = b;

@@ -255,7 +255,7 @@ namespace particulate {
       prm.declare_entry(
         "Covered nodes",
         "inside",
-        Patterns::Selection("inside|nearest"),
+        Patterns::Selection("inside|halfway|nearest"),
         "Which velocity nodes take a particle's rigid velocity. inside: the "
         "nodes inside it (signed distance <= 0, thesis eq. 5.9); the flow "
         "sees a body shrunk to its innermost nodes. nearest: also the nodes "
@@ -264,7 +264,8 @@ namespace particulate {
         "enlarged by up to that. The two bracket the body: creeping flow "
         "past a sphere at 2.7 cells per diameter gives drags 7.7 % below "
         "(inside) and 7.3 % above (nearest) the closed form (doc/fbm.md, "
-        "'Which nodes'). The "
+        "'Which nodes'). halfway: the nodes outside by less than a quarter "
+        "of the local node spacing, half the reach of nearest. The "
         "cuda containment backend supports 'inside' only.");
       prm.leave_subsection();
     }
@@ -348,13 +349,13 @@ namespace particulate {
           }
         return faces;
       };
-      walls                 = read_faces("Domain walls");
-      symmetry_planes       = read_faces("Symmetry planes");
-      substeps              = prm.get_integer("Rigid substeps");
-      containment_backend   = prm.get("Containment backend");
-      covered_nodes_nearest = prm.get("Covered nodes") == "nearest";
+      walls               = read_faces("Domain walls");
+      symmetry_planes     = read_faces("Symmetry planes");
+      substeps            = prm.get_integer("Rigid substeps");
+      containment_backend = prm.get("Containment backend");
+      covered_nodes       = prm.get("Covered nodes");
       prm.leave_subsection();
-      if (containment_backend == "cuda" && covered_nodes_nearest)
+      if (containment_backend == "cuda" && covered_nodes != "inside")
         fail("Containment backend",
              "the cuda containment engine marks the nodes inside the "
              "particles only; set 'Covered nodes = inside' or choose "

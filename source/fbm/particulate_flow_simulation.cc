@@ -81,6 +81,19 @@ namespace particulate {
                  M_PI * p.radius * p.radius :
                  4. / 3. * M_PI * std::pow(p.radius, 3);
       }
+
+      /** The marking named by 'Covered nodes' (a validated selection). */
+      template <int dim>
+      typename FictitiousBoundary<dim>::Marking
+      marking_from_name(const std::string &name)
+      {
+        using Marking = typename FictitiousBoundary<dim>::Marking;
+        if (name == "nearest")
+          return Marking::nearest;
+        if (name == "halfway")
+          return Marking::halfway;
+        return Marking::inside;
+      }
     } // namespace
 
 
@@ -289,15 +302,13 @@ namespace particulate {
         }
 
       FictitiousBoundary<dim> interface(flow);
-      interface.set_marking(particle_p.covered_nodes_nearest ?
-                              FictitiousBoundary<dim>::Marking::nearest :
-                              FictitiousBoundary<dim>::Marking::inside);
+      interface.set_marking(marking_from_name<dim>(particle_p.covered_nodes));
       interface.setup();
       // the engine marks the nodes inside only: 'auto' keeps the hash grid
-      // for 'Covered nodes = nearest' (checked for 'cuda' when parsing)
+      // for the other markings (checked for 'cuda' when parsing)
       if (particle_p.containment_backend == "cuda"
           || (particle_p.containment_backend == "auto"
-              && !particle_p.covered_nodes_nearest
+              && particle_p.covered_nodes == "inside"
               && cuda::ContainmentEngine::cuda_device_available()))
         interface.use_containment_engine(cuda::Backend::cuda);
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;

@@ -6,9 +6,9 @@
 // the disk agree to the solver tolerances (the partitioning changes the AMG,
 // so agreement is not to round-off). This checks that the constraints inside
 // the body, the decoupled pressures and the force integrals are consistent
-// across ranks, also for cells on partition boundaries. Both markings of
-// the covered nodes are run: 'nearest' also needs the node spacings shared
-// across ranks, and decouples pressure modes of cut cells.
+// across ranks, also for cells on partition boundaries. All three markings
+// of the covered nodes are run: 'halfway' and 'nearest' also need the node
+// spacings shared across ranks, and decouple pressure modes of cut cells.
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
@@ -55,7 +55,7 @@ main(int argc, char **argv)
     = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   checker.check(n_ranks > 1, "runs on more than one rank");
 
-  for (const std::string marking : {"inside", "nearest"})
+  for (const std::string marking : {"inside", "halfway", "nearest"})
     {
       const auto parallel
         = run(MPI_COMM_WORLD, marking, "settling_disk_parallel_" + marking);

@@ -50,6 +50,9 @@ namespace particulate {
         /// signed distance <= 0 (thesis eq. 5.9): the flow sees the body
         /// shrunk to its innermost nodes, on average by half a node spacing
         inside,
+        /// signed distance <= a quarter of the local node spacing: half
+        /// the reach of Marking::nearest, between the two bracketing rules
+        halfway,
         /// signed distance <= half the local node spacing: the surface
         /// rounded to the nearest node; the body seen enlarged instead
         nearest
@@ -85,8 +88,8 @@ namespace particulate {
 
       /**
        * Mark every node by the first body that covers it (signed distance
-       * <= 0, or <= half the local node spacing with Marking::nearest), or
-       * -1.
+       * <= 0; <= a quarter or half the local node spacing with
+       * Marking::halfway or Marking::nearest), or -1.
        */
       void
       classify(const std::vector<Body> &bodies);
@@ -153,9 +156,9 @@ namespace particulate {
       std::unique_ptr<geometry::PointHashGrid> grid;
       std::vector<int>                         node_body;
       Marking                                  marking = Marking::inside;
-      /// Marking::nearest: per node half the local node spacing (a quarter of
-      /// the shortest cell edge around it, the same on every rank), and its
-      /// maximum
+      /// Marking::halfway and nearest: per node half the local node spacing
+      /// (a quarter of the shortest cell edge around it, the same on every
+      /// rank), and its maximum
       std::vector<double> half_spacing;
       double              largest_half_spacing = 0.;
       /// the engine path: its engine, the node positions as floats, one
@@ -168,6 +171,10 @@ namespace particulate {
       classify_with_engine(const std::vector<Body> &bodies);
       void
       make_half_spacing_consistent();
+      /** How far outside a body a node may lie and still be covered, as a
+       *  fraction of its half node spacing: 0, 1/2 or 1. */
+      double
+      reach_fraction() const;
       std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> cells;
       std::vector<unsigned int> nodes_of_cells;
       unsigned int              nodes_per_cell_ = 0;

@@ -75,8 +75,8 @@ namespace particulate {
       unsigned int        substeps = 1;
       /// "auto", "cpu" or "cuda": how the FBM finds the nodes inside bodies
       std::string containment_backend = "auto";
-      /// 'Covered nodes = nearest' (true) or 'inside' (false)
-      bool covered_nodes_nearest = false;
+      /// 'Covered nodes': "inside", "halfway" or "nearest"
+      std::string covered_nodes = "inside";
       /// faces of the mesh's bounding box that are mirror planes of the
       /// set-up (x-, x+, y-, y+, z-, z+): the particles lie on them, and the
       /// loads integrated over the part of each body inside the mesh are
