@@ -21,22 +21,20 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                         checker;
 
-  const std::string tight
-    = "subsection Mesh\n set Refinements = 1\nend\n"
-      "subsection Time\n set End time = 0.03\nend\n"
-      "subsection Nonlinear solver\n set Absolute tolerance = 1e-12\n"
-      " set Relative tolerance = 1e-12\nend\n"
-      "subsection Linear solver\n set Relative tolerance = 1e-8\n"
-      " set Pressure Poisson tolerance = 1e-8\n";
-  const auto amg
-    = testing::run_library_case("dfg-2d-2",
-                                tight
-                                  + " set Velocity preconditioner = AMG\nend\n",
-                                MPI_COMM_SELF,
-                                "chebyshev_matches_amg_amg");
+  const std::string tight = "subsection Mesh\n set Refinements = 1\nend\n"
+                            "subsection Time\n set End time = 0.03\nend\n"
+                            + testing::tight_solver_tolerances();
+  const auto amg = testing::run_library_case(
+    "dfg-2d-2",
+    tight
+      + "subsection Linear solver\n set Velocity preconditioner = AMG\nend\n",
+    MPI_COMM_SELF,
+    "chebyshev_matches_amg_amg");
   const auto chebyshev = testing::run_library_case(
     "dfg-2d-2",
-    tight + " set Velocity preconditioner = Chebyshev\nend\n",
+    tight
+      + "subsection Linear solver\n set Velocity preconditioner = "
+        "Chebyshev\nend\n",
     MPI_COMM_SELF,
     "chebyshev_matches_amg_chebyshev");
   testing::check_coefficients(checker,

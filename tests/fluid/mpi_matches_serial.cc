@@ -24,12 +24,8 @@ main(int argc, char **argv)
     = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   checker.check(n_ranks > 1, "runs on more than one rank");
 
-  const std::string tight
-    = "subsection Mesh\n set Refinements = 1\nend\n"
-      "subsection Nonlinear solver\n set Absolute tolerance = 1e-12\n"
-      " set Relative tolerance = 1e-12\nend\n"
-      "subsection Linear solver\n set Relative tolerance = 1e-8\n"
-      " set Pressure Poisson tolerance = 1e-8\nend\n";
+  const std::string tight = "subsection Mesh\n set Refinements = 1\nend\n"
+                            + testing::tight_solver_tolerances();
   const std::string unsteady
     = tight + "subsection Time\n set End time = 0.03\nend\n";
 

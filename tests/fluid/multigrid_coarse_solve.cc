@@ -75,13 +75,22 @@ namespace {
               << std::endl;
   }
 
-  std::string
-  coarse_solver(const std::string &choice)
+  /** DFG 2D-2's case file with @p overrides, the geometric multigrid and
+   *  'Multigrid coarse solver = @p choice', on all ranks. */
+  fluid::FlowRunSummary
+  run_with_coarse_solver(const std::string &overrides,
+                         const std::string &choice,
+                         const std::string &output)
   {
-    return "subsection Linear solver\n"
-           " set Velocity preconditioner = geometric multigrid\n"
-           " set Multigrid coarse solver = "
-           + choice + "\nend\n";
+    return testing::run_library_case(
+      "dfg-2d-2",
+      overrides
+        + "subsection Linear solver\n"
+          " set Velocity preconditioner = geometric multigrid\n"
+          " set Multigrid coarse solver = "
+        + choice + "\nend\n",
+      MPI_COMM_WORLD,
+      output);
   }
 } // namespace
 
@@ -93,26 +102,19 @@ main(int argc, char **argv)
   testing::Checker                         checker;
   const unsigned int                       rank
     = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const std::string tight
-    = "subsection Nonlinear solver\n set Absolute tolerance = 1e-12\n"
-      " set Relative tolerance = 1e-12\nend\n"
-      "subsection Linear solver\n set Relative tolerance = 1e-8\n"
-      " set Pressure Poisson tolerance = 1e-8\nend\n";
+  const std::string tight = testing::tight_solver_tolerances();
 
   {
     const std::string unsteady = "subsection Mesh\n set Refinements = 1\nend\n"
                                  "subsection Time\n set End time = 0.02\nend\n"
                                  + tight;
     const auto automatic
-      = testing::run_library_case("dfg-2d-2",
-                                  unsteady + coarse_solver("automatic"),
-                                  MPI_COMM_WORLD,
-                                  "coarse_solve_unsteady_automatic");
-    const auto cg_amg
-      = testing::run_library_case("dfg-2d-2",
-                                  unsteady + coarse_solver("CG + AMG"),
-                                  MPI_COMM_WORLD,
-                                  "coarse_solve_unsteady_cg_amg");
+      = run_with_coarse_solver(unsteady,
+                               "automatic",
+                               "coarse_solve_unsteady_automatic");
+    const auto cg_amg = run_with_coarse_solver(unsteady,
+                                               "CG + AMG",
+                                               "coarse_solve_unsteady_cg_amg");
     if (rank == 0)
       report("DFG 2D-2", automatic, cg_amg, "CG + AMG");
     check_coarse_path(checker,
@@ -153,17 +155,13 @@ main(int argc, char **argv)
         "end\n"
         + tight;
     const auto automatic
-      = testing::run_library_case("dfg-2d-2",
-                                  steady_half_channel
-                                    + coarse_solver("automatic"),
-                                  MPI_COMM_WORLD,
-                                  "coarse_solve_steady_automatic");
+      = run_with_coarse_solver(steady_half_channel,
+                               "automatic",
+                               "coarse_solve_steady_automatic");
     const auto chebyshev
-      = testing::run_library_case("dfg-2d-2",
-                                  steady_half_channel
-                                    + coarse_solver("Chebyshev"),
-                                  MPI_COMM_WORLD,
-                                  "coarse_solve_steady_chebyshev");
+      = run_with_coarse_solver(steady_half_channel,
+                               "Chebyshev",
+                               "coarse_solve_steady_chebyshev");
     if (rank == 0)
       report("steady half channel", automatic, chebyshev, "Chebyshev forced");
     check_coarse_path(checker,

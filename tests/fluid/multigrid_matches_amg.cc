@@ -39,13 +39,9 @@ main(int argc, char **argv)
       " set Velocity preconditioner = geometric multigrid\nend\n";
 
   {
-    const std::string tight
-      = "subsection Mesh\n set Refinements = 1\nend\n"
-        "subsection Time\n set End time = 0.03\nend\n"
-        "subsection Nonlinear solver\n set Absolute tolerance = 1e-12\n"
-        " set Relative tolerance = 1e-12\nend\n"
-        "subsection Linear solver\n set Relative tolerance = 1e-8\n"
-        " set Pressure Poisson tolerance = 1e-8\nend\n";
+    const std::string tight = "subsection Mesh\n set Refinements = 1\nend\n"
+                              "subsection Time\n set End time = 0.03\nend\n"
+                              + testing::tight_solver_tolerances();
     const auto            with_multigrid = testing::run_library_case("dfg-2d-2",
                                                           tight + multigrid,
                                                           MPI_COMM_WORLD,

@@ -61,6 +61,18 @@ namespace particulate {
       return parameters;
     }
 
+    /** .prm text for solver tolerances under which runs that differ only
+     *  in a preconditioner or the partitioning agree to about 1e-8: Newton
+     *  to 1e-12, FGMRES and the inner pressure-Poisson CG to 1e-8. */
+    inline std::string
+    tight_solver_tolerances()
+    {
+      return "subsection Nonlinear solver\n set Absolute tolerance = 1e-12\n"
+             " set Relative tolerance = 1e-12\nend\n"
+             "subsection Linear solver\n set Relative tolerance = 1e-8\n"
+             " set Pressure Poisson tolerance = 1e-8\nend\n";
+    }
+
     /** Run the library case @p name with @p overrides on @p comm, output
      *  (no VTU) into @p output. */
     template <int dim = 2>
