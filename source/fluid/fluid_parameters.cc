@@ -207,6 +207,15 @@ namespace particulate {
                         Patterns::Integer(1),
                         "Nonlinear iterations per (sub)step before the run "
                         "stops with an error.");
+      prm.declare_entry(
+        "Initial guess",
+        "extrapolated",
+        Patterns::Selection("extrapolated|previous solution"),
+        "First iterate of every (sub)step. 'extrapolated': the solution at "
+        "the start of the (sub)step plus the rate of change over the last "
+        "full time step (fewer Newton and FGMRES iterations once the flow "
+        "evolves smoothly); 'previous solution': the solution at the start "
+        "of the (sub)step.");
       prm.leave_subsection();
     }
 
@@ -218,6 +227,7 @@ namespace particulate {
       absolute_tolerance = prm.get_double("Absolute tolerance");
       relative_tolerance = prm.get_double("Relative tolerance");
       maximum_iterations = prm.get_integer("Maximum iterations");
+      initial_guess      = prm.get("Initial guess");
       prm.leave_subsection();
     }
 

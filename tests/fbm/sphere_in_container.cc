@@ -20,6 +20,7 @@
 #include <particulate/fbm/particulate_flow_simulation.h>
 
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 
 #include "../fluid/test_utilities.h"
@@ -62,15 +63,20 @@ main(int argc, char **argv)
   const double halfway = drag(refinements, "halfway");
   const double nearest = drag(refinements, "nearest");
   const auto   error   = [&](const double f) { return f / exact - 1.; };
-  std::cout << "level " << refinements << ": closed form " << exact
-            << " N, inside " << inside << " N (" << 100. * error(inside)
-            << " %), halfway " << halfway << " N (" << 100. * error(halfway)
-            << " %), nearest " << nearest << " N (" << 100. * error(nearest)
-            << " %), mean of inside and nearest "
+  std::cout << std::setprecision(15) << "level " << refinements
+            << ": closed form " << exact << " N, inside " << inside << " N ("
+            << 100. * error(inside) << " %), halfway " << halfway << " N ("
+            << 100. * error(halfway) << " %), nearest " << nearest << " N ("
+            << 100. * error(nearest) << " %), mean of inside and nearest "
             << 100. * error(0.5 * (inside + nearest)) << " %" << std::endl;
   checker.check(inside < exact, "'inside' (a smaller body): drag too low");
   checker.check(nearest > exact, "'nearest' (a larger body): drag too high");
-  checker.check(inside <= halfway && halfway <= nearest,
+  // Each drag comes from a Newton solve stopped at a relative residual of
+  // 1e-6 (the case's tolerance): two markings of the same nodes may differ
+  // by that much, so the ordering is checked up to it.
+  const double solver_accuracy = 1e-6;
+  checker.check(inside <= halfway * (1. + solver_accuracy)
+                  && halfway <= nearest * (1. + solver_accuracy),
                 "'halfway' between 'inside' and 'nearest'");
   return checker.exit_code();
 }

@@ -74,6 +74,8 @@ namespace particulate {
       double       absolute_tolerance = 1e-10;
       double       relative_tolerance = 1e-6;
       unsigned int maximum_iterations = 20;
+      /// "extrapolated" or "previous solution"
+      std::string initial_guess = "extrapolated";
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -400,7 +400,8 @@ namespace particulate {
       BlockVector old_solution;  // ghosted
       BlockVector mesh_velocity; // ghosted
       bool        has_mesh_velocity = false;
-      /// solution at the start of the previous stage, for extrapolation
+      /// solution at the start of the previous time step, for the
+      /// extrapolated first Newton iterate
       BlockVector previous_solution;
       double      previous_time         = 0.;
       bool        has_previous_solution = false;
