@@ -484,8 +484,13 @@ namespace particulate {
                                          communicator,
                                          parameters.restart);
 
+      // from the shape, not the engine's body: a fixed or prescribed
+      // particle is an immovable body of infinite inertia in the engine
       const auto true_inertia_world = [&](const rigid::RigidBody &b) {
-        return Eigen::Matrix3d(b.inertia_world() * (rho_p / rho_engine));
+        const Eigen::Matrix3d R = b.rotation();
+        return Eigen::Matrix3d(
+          R * (rho_p * b.shape().unit_density_inertia()).asDiagonal()
+          * R.transpose());
       };
       const auto particle_energy = [&](const rigid::RigidBody &b) {
         return 0.5 * rho_p * volume * b.linear_velocity.squaredNorm()
