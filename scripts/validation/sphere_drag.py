@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Drag of ten Cate E4's sphere held fixed in a uniform stream
+(prm/sphere-drag/fixed-sphere.prm) and translating through fluid at rest
+(moving-sphere.prm), from the output folders of
+scripts/validation/sphere_drag.sh.
+
+    scripts/validation/sphere_drag.py output/fixed-sphere-r* output/moving-sphere-r*
+        [--doc doc/validation/sphere-drag]
+
+Both flows start impulsively at t = 0, so at equal times they are the same
+physical flow seen from two frames. For each folder it prints the drag
+averaged over WINDOW (the moving sphere's covered nodes change every few
+steps and its drag with them), the last drag (the fixed sphere's steady
+value) against the standard drag curve, and for a moving run the ratio of
+its window mean to that of the fixed run of the same level and tag. With
+--doc it writes sphere-drag.png (drag against time) and sphere-drag.dat
+(the table) there.
+"""
+import argparse
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+WINDOW = (0.3, 0.5)  # s: after the start-up, before the moving sphere's end
+
+
+def used_value(folder, entry):
+    with open(os.path.join(folder, "used_parameters.prm")) as f:
+        for line in f:
+            m = re.match(r"\s*set\s+" + re.escape(entry) + r"\s*=\s*(.*)", line)
+            if m:
+                return m.group(1).strip()
+    sys.exit(f"{folder}/used_parameters.prm: no entry '{entry}'")
+
+
+def standard_drag(folder, speed):
+    """Clift, Grace & Weber (1978), 20 <= Re <= 260, whole sphere [N]."""
+    rho = float(used_value(folder, "Density"))
+    mu = float(used_value(folder, "Dynamic viscosity"))
+    d = 2 * float(used_value(folder, "Radius"))
+    re_ = rho * speed * d / mu
+    if not 20 <= re_ <= 260:
+        sys.exit(f"{folder}: Re = {re_:.1f} outside the correlation's 20-260")
+    c_d = 24 / re_ * (1 + 0.1935 * re_**0.6305)
+    return re_, c_d * rho * speed**2 * math.pi * d**2 / 8
+
+
+def mesh_size(folder):
+    """Cells and DoFs from the run's log, if kept."""
+    try:
+        with open(os.path.join(folder, "run.log")) as f:
+            for line in f:
+                m = re.match(r"Mesh: (\d+) cells, (\d+) DoFs", line)
+                if m:
+                    return int(m.group(1)), int(m.group(2))
+    except OSError:
+        pass
+    return None, None
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("folders", nargs="+")
+    parser.add_argument("--doc", help="folder for the figure and table")
+    args = parser.parse_args()
+
+    runs = {}
+    for folder in args.folders:
+        name = os.path.basename(os.path.normpath(folder))
+        m = re.match(r"(fixed|moving)-sphere-r(\d+)(?:-(.+))?$", name)
+        if not m or not os.path.exists(os.path.join(folder, "particle_0.dat")):
+            print(f"skipped {folder} (not a finished sphere_drag.sh run)")
+            continue
+        frame, level, tag = m.group(1), int(m.group(2)), m.group(3) or ""
+        a = np.loadtxt(os.path.join(folder, "particle_0.dat"), ndmin=2)
+        t, f_z = a[:, 0], a[:, 12]
+        inside = (t > WINDOW[0] + 1e-9) & (t <= WINDOW[1] + 1e-9)
+        if t[-1] < WINDOW[1] - 1e-9:
+            print(f"skipped {folder} (ends at t = {t[-1]} s, before {WINDOW[1]} s)")
+            continue
+        speed = 0.128 if frame == "fixed" else abs(a[-1, 6])
+        runs[(frame, level, tag)] = dict(
+            folder=folder, t=t, f=f_z, mean=f_z[inside].mean(),
+            spread=(f_z[inside].min(), f_z[inside].max()),
+            last=(t[-1], f_z[-1]), reference=standard_drag(folder, speed),
+            size=mesh_size(folder),
+            marking=used_value(folder, "Covered nodes"),
+            integral=used_value(folder, "Force integral"))
+
+    header = ("| run | r | cells/D | cells (DoFs) | covered nodes | force integral "
+              f"| mean drag {WINDOW[0]}-{WINDOW[1]} s [mN] | min-max [mN] "
+              "| last drag [mN] (t [s]) | against the drag curve | moving/fixed |")
+    lines = [header, "|" + "---|" * 11]
+    for key in sorted(runs, key=lambda k: (k[2], k[1], k[0])):
+        frame, level, tag = key
+        r = runs[key]
+        re_, f_ref = r["reference"]
+        cells, dofs = r["size"]
+        ratio = ""
+        if frame == "moving" and ("fixed", level, tag) in runs:
+            ratio = f"{r['mean'] / runs[('fixed', level, tag)]['mean']:.3f}"
+        elif frame == "moving" and ("fixed", level, "") in runs:
+            ratio = f"{r['mean'] / runs[('fixed', level, '')]['mean']:.3f} (untagged fixed)"
+        size = f"{cells} ({dofs})" if cells else "-"
+        # the fixed sphere's drag at its end is (nearly) steady; the moving
+        # one's is compared by its window mean
+        against = (f"{100 * (r['last'][1] / f_ref - 1):+.1f} % (last)"
+                   if frame == "fixed" else
+                   f"{100 * (r['mean'] / f_ref - 1):+.1f} % (mean)")
+        lines.append(
+            f"| {os.path.basename(os.path.normpath(r['folder']))} | {level} | {3 << level} | {size} | {r['marking']} "
+            f"| {r['integral']} | {1e3 * r['mean']:.4f} "
+            f"| {1e3 * r['spread'][0]:.3f}-{1e3 * r['spread'][1]:.3f} "
+            f"| {1e3 * r['last'][1]:.4f} ({r['last'][0]:.3g}) "
+            f"| {against} (Re {re_:.1f}, {1e3 * f_ref:.4f} mN) "
+            f"| {ratio} |")
+    table = "\n".join(lines)
+    print(table)
+
+    if args.doc and runs:
+        import matplotlib  # only for the figure
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        os.makedirs(args.doc, exist_ok=True)
+        with open(os.path.join(args.doc, "sphere-drag.dat"), "w") as f:
+            f.write(table + "\n")
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        for key in sorted(runs):
+            frame, level, tag = key
+            r = runs[key]
+            label = f"{frame}, r={level}{', ' + tag if tag else ''}"
+            line, = ax.plot(r["t"], 1e3 * r["f"], lw=1.5 if frame == "fixed" else 0.6,
+                            alpha=1 if frame == "fixed" else 0.6, label=label)
+            # the window mean the table compares, as a bar over the window
+            ax.plot(WINDOW, [1e3 * r["mean"]] * 2, color=line.get_color(), lw=3)
+        f_ref = next(iter(runs.values()))["reference"][1]
+        ax.axhline(1e3 * f_ref, color="k", ls="--",
+                   label="standard drag curve (Clift et al.)")
+        ax.axvspan(*WINDOW, color="0.9", zorder=0)
+        ax.set_xlim(0, 1.25)
+        ax.set_ylim(0, 1e3 * 2 * f_ref)
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("drag on the sphere [mN]")
+        ax.set_title("E4's sphere at 0.128 m/s: fixed in a stream, moving through the mesh")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.doc, "sphere-drag.png"), dpi=120)
+        print(f"wrote {args.doc}/sphere-drag.png and sphere-drag.dat")
+
+
+if __name__ == "__main__":
+    main()
