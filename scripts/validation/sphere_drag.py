@@ -23,17 +23,9 @@ import re
 import sys
 
 import numpy as np
+from used_parameters import used_value
 
 WINDOW = (0.3, 0.5)  # s: after the start-up, before the moving sphere's end
-
-
-def used_value(folder, entry):
-    with open(os.path.join(folder, "used_parameters.prm")) as f:
-        for line in f:
-            m = re.match(r"\s*set\s+" + re.escape(entry) + r"\s*=\s*(.*)", line)
-            if m:
-                return m.group(1).strip()
-    sys.exit(f"{folder}/used_parameters.prm: no entry '{entry}'")
 
 
 def standard_drag(folder, speed):

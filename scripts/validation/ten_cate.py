@@ -14,7 +14,6 @@ ten-cate.dat (the table).
 """
 import argparse
 import os
-import re
 import sys
 
 import matplotlib
@@ -22,6 +21,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from used_parameters import used_value  # noqa: E402
 
 # experiment: fluid density [kg/m^3], dynamic viscosity [Pa s], u_max [m/s]
 EXPERIMENT = {
@@ -36,15 +36,6 @@ def read_series(path):
     with open(path) as f:
         names = f.readline()[1:].split()
     return names, np.loadtxt(path, ndmin=2)
-
-
-def used_value(folder, entry):
-    with open(os.path.join(folder, "used_parameters.prm")) as f:
-        for line in f:
-            m = re.match(r"\s*set\s+" + re.escape(entry) + r"\s*=\s*(.*)", line)
-            if m:
-                return m.group(1).strip()
-    sys.exit(f"{folder}/used_parameters.prm: no entry '{entry}'")
 
 
 def identify(folder):
