@@ -121,25 +121,31 @@ def main():
         os.makedirs(args.doc, exist_ok=True)
         with open(os.path.join(args.doc, "sphere-drag.dat"), "w") as f:
             f.write(table + "\n")
-        fig, ax = plt.subplots(figsize=(7, 4.5))
-        for key in sorted(runs):
-            frame, level, tag = key
-            r = runs[key]
-            label = f"{frame}, r={level}{', ' + tag if tag else ''}"
-            line, = ax.plot(r["t"], 1e3 * r["f"], lw=1.5 if frame == "fixed" else 0.6,
-                            alpha=1 if frame == "fixed" else 0.6, label=label)
-            # the window mean the table compares, as a bar over the window
-            ax.plot(WINDOW, [1e3 * r["mean"]] * 2, color=line.get_color(), lw=3)
+        # (a) the plain runs, r = 0, 1, 2; (b) the variants (tagged runs)
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
         f_ref = next(iter(runs.values()))["reference"][1]
-        ax.axhline(1e3 * f_ref, color="k", ls="--",
-                   label="standard drag curve (Clift et al.)")
-        ax.axvspan(*WINDOW, color="0.9", zorder=0)
-        ax.set_xlim(0, 1.25)
-        ax.set_ylim(0, 1e3 * 2 * f_ref)
-        ax.set_xlabel("t [s]")
-        ax.set_ylabel("drag on the sphere [mN]")
-        ax.set_title("E4's sphere at 0.128 m/s: fixed in a stream, moving through the mesh")
-        ax.legend(fontsize=8)
+        for ax, tagged in zip(axes, (False, True)):
+            for key in sorted(runs):
+                frame, level, tag = key
+                if bool(tag) != tagged:
+                    continue
+                r = runs[key]
+                label = f"{frame}, r={level}{', ' + tag if tag else ''}"
+                line, = ax.plot(r["t"], 1e3 * r["f"],
+                                lw=1.5 if frame == "fixed" else 0.6,
+                                alpha=1 if frame == "fixed" else 0.7, label=label)
+                # the window mean the table compares, as a bar over the window
+                ax.plot(WINDOW, [1e3 * r["mean"]] * 2, color=line.get_color(), lw=3)
+            ax.axhline(1e3 * f_ref, color="k", ls="--",
+                       label="standard drag curve (Clift et al.)")
+            ax.axvspan(*WINDOW, color="0.9", zorder=0)
+            ax.set_xlim(0, 1.25)
+            ax.set_ylim(0, 1e3 * 2 * f_ref)
+            ax.set_xlabel("t [s]")
+            ax.legend(fontsize=8, loc="lower right")
+        axes[0].set_ylabel("drag on the sphere [mN]")
+        axes[0].set_title("nearest, fixed mesh: r = 0, 1, 2")
+        axes[1].set_title("variants (folder tags)")
         fig.tight_layout()
         fig.savefig(os.path.join(args.doc, "sphere-drag.png"), dpi=120)
         print(f"wrote {args.doc}/sphere-drag.png and sphere-drag.dat")
