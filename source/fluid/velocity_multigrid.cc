@@ -379,14 +379,15 @@ namespace particulate {
                         if (normal_component == dim)
                           {
                             std::ostringstream message;
-                            message
-                              << "The geometric multigrid velocity "
-                                 "preconditioner supports free-slip "
-                                 "boundaries only on planes normal to a "
-                                 "coordinate axis; boundary id "
-                              << id
-                              << " is not. Use 'Velocity preconditioner = "
-                                 "AMG' in subsection 'Linear solver'.";
+                            message << "The geometric multigrid velocity "
+                                       "preconditioner supports free-slip "
+                                       "boundaries only on planes normal to a "
+                                       "coordinate axis; boundary id "
+                                    << id << " is not (the face at "
+                                    << cell->face(f)->center() << " on level "
+                                    << level << " has the normal " << normal
+                                    << "). Use 'Velocity preconditioner = "
+                                       "AMG' in subsection 'Linear solver'.";
                             throw std::runtime_error(message.str());
                           }
                       }
