@@ -10,8 +10,9 @@ scripts/validation/sphere_drag.sh.
 Both flows start impulsively at t = 0, so at equal times they are the same
 physical flow seen from two frames. For each folder it prints the drag
 averaged over WINDOW (the moving sphere's covered nodes change every few
-steps and its drag with them), the last drag (the fixed sphere's steady
-value) against the standard drag curve, and for a moving run the ratio of
+steps and its drag with them), the last drag, the error against the
+standard drag curve at the case's U (of the fixed sphere's last, nearly
+steady drag; of the moving sphere's window mean), and for a moving run the ratio of
 its window mean to that of the fixed run of the same level and tag. With
 --doc it writes sphere-drag.png (drag against time) and sphere-drag.dat
 (the table) there.
@@ -73,7 +74,12 @@ def main():
         if t[-1] < WINDOW[1] - 1e-9:
             print(f"skipped {folder} (ends at t = {t[-1]} s, before {WINDOW[1]} s)")
             continue
-        speed = 0.128 if frame == "fixed" else abs(a[-1, 6])
+        # U from the case: the stream's 'Velocity constants' (fixed) or the
+        # 'Prescribed displacement constants' (moving), both 'U = ...'
+        entry = ("Velocity constants" if frame == "fixed"
+                 else "Prescribed displacement constants")
+        speed = float(re.search(r"\bU\s*=\s*([-+.\deE]+)",
+                                used_value(folder, entry)).group(1))
         runs[(frame, level, tag)] = dict(
             folder=folder, t=t, f=f_z, mean=f_z[inside].mean(),
             spread=(f_z[inside].min(), f_z[inside].max()),

@@ -20,12 +20,8 @@
 #include <particulate/fbm/particulate_flow_simulation.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
-#include <string>
-#include <vector>
 
 #include "../fluid/test_utilities.h"
 
@@ -53,24 +49,6 @@ namespace {
                                                  "sphere-in-container.prm",
                                                  MPI_COMM_WORLD);
     return -simulation.run().force[0][2];
-  }
-
-  /** The last row of the particle's time series, as numbers. */
-  std::vector<double>
-  last_particle_row()
-  {
-    std::ifstream file("fbm_sphere_in_container_output/particle_0.dat");
-    std::string   line, last;
-    while (std::getline(file, line))
-      if (!line.empty() && line[0] != '#')
-        last = line;
-    std::istringstream  words(last);
-    std::vector<double> row;
-    std::string         word;
-    // std::stod rather than >>: a stream stops at "nan"
-    while (words >> word)
-      row.push_back(std::stod(word));
-    return row;
   }
 } // namespace
 
@@ -111,8 +89,11 @@ main(int argc, char **argv)
   // The body is fixed: its kinetic energy (column 20 of particle_0.dat)
   // is zero, and every column a number. (A fixed body has infinite mass in
   // the rigid engine; its energy once came out as 0 * inf = nan.)
-  const std::vector<double> row    = last_particle_row();
-  bool                      finite = row.size() == 21;
+  const auto series = testing::read_time_series(
+    "fbm_sphere_in_container_output/particle_0.dat");
+  const std::vector<double> row
+    = series.empty() ? std::vector<double>() : series.back();
+  bool finite = row.size() == 21;
   for (const double v : row)
     finite = finite && std::isfinite(v);
   checker.check(finite && row[19] == 0.,

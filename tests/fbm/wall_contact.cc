@@ -9,9 +9,6 @@
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "../fluid/test_utilities.h"
 
 using namespace particulate;
@@ -41,24 +38,16 @@ main(int argc, char **argv)
   const double weight = (p.density - parameters.flow.fluid.properties.density)
                         * M_PI * p.radius * p.radius * 9.81;
   // the time series: force (columns 11, 12) and contact force (17, 18)
-  std::ifstream in(output + "/particle_0.dat");
-  std::string   line;
-  double        max_force = 0., fluid_y = 0., contact_y = 0., gap = 0.;
-  unsigned int  rows = 0;
-  while (std::getline(in, line))
+  const auto series    = testing::read_time_series(output + "/particle_0.dat");
+  double     max_force = 0., fluid_y = 0., contact_y = 0., gap = 0.;
+  for (const std::vector<double> &c : series)
     {
-      if (line.empty() || line[0] == '#')
-        continue;
-      std::istringstream  row(line);
-      std::vector<double> c;
-      for (double x; row >> x;)
-        c.push_back(x);
       max_force = std::max(max_force, std::hypot(c[10], c[11]));
       fluid_y   = c[11];
       contact_y = c[17];
       gap       = c[2] - p.radius;
-      ++rows;
     }
+  const std::size_t rows = series.size();
   std::cout << "rows " << rows << ", final gap " << gap << " m (h = " << h
             << " m), velocity " << summary.velocity[0].transpose()
             << " m/s; at rest: fluid " << fluid_y << " N + contact "

@@ -18,6 +18,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace particulate {
   namespace testing {
@@ -59,6 +60,27 @@ namespace particulate {
       fluid::FlowCaseParameters parameters;
       parameters.parse(prm);
       return parameters;
+    }
+
+    /** The data rows of a time series written by the program (a `.dat`:
+     *  '#' comment lines, then whitespace-separated numbers), one vector per
+     *  row. Words are converted with std::stod, so a "nan" in the file
+     *  becomes a NaN here rather than cutting the row short. */
+    inline std::vector<std::vector<double>>
+    read_time_series(const std::string &file)
+    {
+      std::ifstream                    in(file);
+      std::vector<std::vector<double>> rows;
+      for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] != '#')
+          {
+            std::istringstream  words(line);
+            std::vector<double> row;
+            for (std::string word; words >> word;)
+              row.push_back(std::stod(word));
+            rows.push_back(std::move(row));
+          }
+      return rows;
     }
 
     /** .prm text for solver tolerances under which runs that differ only
