@@ -5,7 +5,7 @@
 scripts/validation/sphere_drag.sh.
 
     scripts/validation/sphere_drag.py output/fixed-sphere-r* output/moving-sphere-r*
-        [--doc doc/validation/sphere-drag]
+        [--doc doc/validation/sphere-drag] [--plot-tags TAG ...]
 
 Both flows start impulsively at t = 0, so at equal times they are the same
 physical flow seen from two frames. For each folder it prints the drag
@@ -58,6 +58,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("folders", nargs="+")
     parser.add_argument("--doc", help="folder for the figure and table")
+    parser.add_argument("--plot-tags", nargs="*",
+                        help="the tagged runs of the figure's second panel "
+                             "(default: all; the table has every run)")
     args = parser.parse_args()
 
     runs = {}
@@ -134,6 +137,8 @@ def main():
             for key in sorted(runs):
                 frame, level, tag = key
                 if bool(tag) != tagged:
+                    continue
+                if tagged and args.plot_tags is not None and tag not in args.plot_tags:
                     continue
                 r = runs[key]
                 label = f"{frame}, r={level}{', ' + tag if tag else ''}"

@@ -72,18 +72,44 @@ namespace particulate {
       prm.declare_entry(
         "Moving bodies",
         "re-adapt",
-        Patterns::Selection("re-adapt|carry surface vertices"),
+        Patterns::Selection(
+          "re-adapt|carry surface vertices|carry neighbourhood"),
         "How the mesh follows bodies that move: re-adapt adapts the "
         "undeformed mesh afresh every time step; 'carry surface vertices' "
         "(laplace-alpha only) moves the vertices on a surface with their "
         "body and smooths the others (thesis §5.7), so that no vertex "
-        "crosses a surface, and adapts afresh only when the quality falls "
-        "below 'Re-adaptation quality' or a surface vertex cannot follow.");
+        "crosses a surface; 'carry neighbourhood' (any Method, also none) "
+        "moves every vertex within 'Carried zone width' of a body's surface "
+        "rigidly with the body's translation, and those up to 'Carried zone "
+        "fade' farther out by a share that falls smoothly to zero, so that "
+        "no velocity node enters or leaves a body while the mesh is carried "
+        "(the mesh velocity enters the flow as ALE; rotations are not "
+        "followed, which spheres and disks do not need). Both carrying "
+        "modes adapt afresh, and carry the flow over by interpolation, only "
+        "when the quality falls below 'Re-adaptation quality' or above "
+        "'Re-adaptation aspect ratio' (or a surface vertex cannot follow).");
+      prm.declare_entry(
+        "Carried zone width",
+        "0.01",
+        Patterns::Double(0.),
+        "[m] 'carry neighbourhood': vertices closer than this to a body's "
+        "surface (and those inside it) move rigidly with the body. At least "
+        "a cell beyond the surface, so that the cut cells keep their shape.");
+      prm.declare_entry(
+        "Carried zone fade",
+        "0.05",
+        Patterns::Double(0.),
+        "[m] 'carry neighbourhood': beyond 'Carried zone width' the "
+        "vertices move by a share of the body's displacement that falls "
+        "smoothly from 1 to 0 over this distance. Longer fades shear and "
+        "compress the cells less, so the mesh is carried farther before it "
+        "is adapted afresh.");
       prm.declare_entry(
         "Re-adaptation quality",
         "0.3",
         Patterns::Double(0., 1.),
-        "'carry surface vertices': adapt afresh when the smallest scaled "
+        "'carry surface vertices' and 'carry neighbourhood': adapt afresh "
+        "when the smallest scaled "
         "Jacobian of the carried mesh falls below this (and below that of "
         "the last fresh adaptation). Above 'Minimum cell quality', which "
         "no move may cross.");
@@ -91,7 +117,7 @@ namespace particulate {
         "Re-adaptation aspect ratio",
         "20",
         Patterns::Double(1.),
-        "'carry surface vertices': adapt afresh when the largest aspect "
+        "Both carrying modes: adapt afresh when the largest aspect "
         "ratio of the carried mesh exceeds this (and that of the last fresh "
         "adaptation): carried vertices stretch the cells between them and "
         "their undeformed neighbours.");
@@ -122,11 +148,15 @@ namespace particulate {
       step_ratio                = prm.get_double("Robust step ratio");
       projection_range          = prm.get_double("Projection range");
       min_quality               = prm.get_double("Minimum cell quality");
-      following                 = prm.get("Moving bodies") == "re-adapt" ?
-                                    Following::readapt :
-                                    Following::carry_surface;
+      const std::string moving  = prm.get("Moving bodies");
+      following                 = moving == "re-adapt" ? Following::readapt :
+                                  moving == "carry surface vertices" ?
+                                                         Following::carry_surface :
+                                                         Following::carry_neighbourhood;
       readaptation_quality      = prm.get_double("Re-adaptation quality");
       readaptation_aspect_ratio = prm.get_double("Re-adaptation aspect ratio");
+      carried_zone_width        = prm.get_double("Carried zone width");
+      carried_zone_fade         = prm.get_double("Carried zone fade");
       prm.leave_subsection();
     }
   } // namespace deformation

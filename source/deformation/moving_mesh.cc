@@ -1,5 +1,7 @@
 #include <particulate/core/checkpoint.h>
+#include <particulate/deformation/distance_field.h>
 #include <particulate/deformation/laplace_smoothing.h>
+#include <particulate/deformation/mesh_quality.h>
 #include <particulate/deformation/moving_mesh.h>
 #include <particulate/deformation/vertex_hierarchy.h>
 
@@ -20,11 +22,15 @@ namespace particulate {
       , following(parameters.following)
       , readaptation_quality(parameters.readaptation_quality)
       , readaptation_aspect_ratio(parameters.readaptation_aspect_ratio)
+      , carried_zone_width(parameters.carried_zone_width)
+      , carried_zone_fade(parameters.carried_zone_fade)
     {
-      if (!method)
+      if (!method
+          && following != DeformationParameters::Following::carry_neighbourhood)
         throw std::invalid_argument(
           "MovingMesh needs a deformation method ('Method' in subsection "
-          "'Mesh deformation' is 'none')");
+          "'Mesh deformation' is 'none') unless it carries the bodies' "
+          "neighbourhoods");
       if (following == DeformationParameters::Following::carry_surface
           && !dynamic_cast<const LaplaceAlpha<dim> *>(method.get()))
         throw std::invalid_argument(
@@ -46,12 +52,23 @@ namespace particulate {
           VertexHierarchy<dim>::write_positions(mesh, undeformed);
           if (following == DeformationParameters::Following::readapt)
             return method->deform(mesh, distance);
-          std::vector<bool> placed;
-          const auto        report
-            = static_cast<const LaplaceAlpha<dim> &>(*method).deform(mesh,
-                                                                     distance,
-                                                                     placed);
-          on_surface.swap(placed);
+          DeformationReport report;
+          if (following == DeformationParameters::Following::carry_surface)
+            {
+              std::vector<bool> placed;
+              report = static_cast<const LaplaceAlpha<dim> &>(*method)
+                         .deform(mesh, distance, placed);
+              on_surface.swap(placed);
+            }
+          else
+            {
+              if (method)
+                report = method->deform(mesh, distance);
+              else
+                report.quality = compute_mesh_quality(mesh);
+              // marks the mesh as adapted (follow() carries it from here)
+              on_surface.assign(mesh.n_vertices(), false);
+            }
           fresh_min_quality      = report.quality.min_scaled_jacobian;
           fresh_max_aspect_ratio = report.quality.max_aspect_ratio;
           return report;
@@ -83,9 +100,11 @@ namespace particulate {
         }
       const std::vector<Point<dim>> before  = mesh.get_vertices();
       std::vector<bool>             carried = on_surface;
-      const auto                    report
-        = static_cast<const LaplaceAlpha<dim> &>(*method)
-            .carry(mesh, undeformed, distance, body_displacement, carried);
+      const DeformationReport       report
+        = following == DeformationParameters::Following::carry_surface ?
+            static_cast<const LaplaceAlpha<dim> &>(*method)
+              .carry(mesh, undeformed, distance, body_displacement, carried) :
+            carry_neighbourhood(distance, body_displacement);
       const bool lost_surface_vertices = carried != on_surface;
       if (!lost_surface_vertices
           && report.quality.min_scaled_jacobian
@@ -98,6 +117,48 @@ namespace particulate {
       auto fresh      = adapt(distance);
       fresh.readapted = true;
       return fresh;
+    }
+
+
+
+    template <int dim>
+    double
+    MovingMesh<dim>::carried_share(const double d) const
+    {
+      if (d <= carried_zone_width)
+        return 1.;
+      if (d >= carried_zone_width + carried_zone_fade)
+        return 0.;
+      const double t = (d - carried_zone_width) / carried_zone_fade;
+      return 1. - t * t * (3. - 2. * t);
+    }
+
+
+
+    template <int dim>
+    DeformationReport
+    MovingMesh<dim>::carry_neighbourhood(
+      const DistanceField<dim> &distance,
+      const std::function<Tensor<1, dim>(const Point<dim> &)>
+        &body_displacement)
+    {
+      const VertexHierarchy<dim> hierarchy(mesh);
+      std::vector<Point<dim>>    positions = mesh.get_vertices();
+      for (unsigned int v = 0; v < positions.size(); ++v)
+        {
+          const Tensor<1, dim> shift = body_displacement(positions[v]);
+          // @p distance is about the bodies' new places; a vertex that moves
+          // all the way keeps its distance, so it is measured there
+          const double share
+            = carried_share(distance.signed_distance(positions[v] + shift));
+          if (share > 0.)
+            // vertices on the domain boundary slide along it
+            positions[v] += hierarchy.admissible_displacement(v, share * shift);
+        }
+      VertexHierarchy<dim>::write_positions(mesh, positions);
+      DeformationReport report;
+      report.quality = compute_mesh_quality(mesh);
+      return report;
     }
 
 

@@ -87,7 +87,7 @@ namespace particulate {
       // A mesh carried with the bodies moves little per step, and the ALE
       // term accounts for it; a fresh adaptation among carried meshes is a
       // jump that would show as a spike of the mesh velocity: interpolate.
-      if (moving_mesh.carries_surface_vertices() && report.readapted)
+      if (moving_mesh.carries_mesh() && report.readapted)
         flow.transfer_to_moved_mesh(move_vertices);
       else
         flow.move_mesh(move_vertices, time_step);

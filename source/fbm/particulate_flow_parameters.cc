@@ -41,8 +41,10 @@ namespace particulate {
       checkpoint.parse(prm);
       deformation.parse(prm);
       if (flow.simulation.type == core::SimulationParameters::Type::fluid
-          && deformation.method
-               != deformation::DeformationParameters::Method::none)
+          && (deformation.method
+                != deformation::DeformationParameters::Method::none
+              || deformation.following
+                   != deformation::DeformationParameters::Following::readapt))
         throw std::runtime_error(
           filename
           + ": subsection 'Mesh deformation' sets a 'Method', but 'Type' in "

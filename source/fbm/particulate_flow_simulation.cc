@@ -207,7 +207,10 @@ namespace particulate {
       deformation::DeformationReport        initial_report;
       const bool                            deforming
         = parameters.deformation.method
-          != deformation::DeformationParameters::Method::none;
+            != deformation::DeformationParameters::Method::none
+          || parameters.deformation.following
+               == deformation::DeformationParameters::Following::
+                 carry_neighbourhood;
       if (deforming)
         {
           TimerOutput::Scope scope(timer, "mesh deformation");

@@ -7,6 +7,10 @@
 // - Laplace-alpha keeps vertices on the circle all along the path;
 // - with 'Moving bodies = carry surface vertices' no vertex crosses the
 //   circle between two fresh adaptations, which are rare;
+// - with 'carry neighbourhood' (on the plain mesh, 'Method = none') the
+//   vertices near the disk keep their place relative to it (none crosses
+//   the circle) while the channel's ends stay put, without a fresh
+//   adaptation on this path;
 // - copied into a distributed mesh, every cell has the serial positions.
 
 #include <particulate/core/mesh.h>
@@ -49,20 +53,43 @@ main(int argc, char **argv)
   mesh.subdivisions = {11, 2};
   mesh.refinements  = 4;
 
-  for (const auto following : {0, 1, 2})
+  for (const auto following : {0, 1, 2, 3})
     {
-      const auto            method = following == 0 ?
-                                       DeformationParameters::Method::laplace_kappa :
-                                       DeformationParameters::Method::laplace_alpha;
-      const bool            carry  = following == 2;
+      const bool neighbourhood = following == 3;
+      const auto method
+        = following == 0 ? DeformationParameters::Method::laplace_kappa :
+          neighbourhood  ? DeformationParameters::Method::none :
+                           DeformationParameters::Method::laplace_alpha;
+      const bool            carry = following >= 2;
       DeformationParameters p;
       p.method = method;
       p.width  = 0.1;
-      if (carry)
+      if (following == 2)
         p.following = DeformationParameters::Following::carry_surface;
+      if (neighbourhood)
+        {
+          p.following = DeformationParameters::Following::carry_neighbourhood;
+          p.carried_zone_width = 0.03;
+          p.carried_zone_fade  = 0.3;
+        }
       MovingMesh<2>     moving(mesh, p);
-      const std::string name
-        = moving.method_name() + (carry ? " (carried)" : "");
+      const std::string name = moving.method_name()
+                               + (neighbourhood ? " (neighbourhood carried)" :
+                                  carry         ? " (carried)" :
+                                                  "");
+      // carry neighbourhood: the vertices within the carried zone at the
+      // start, and where they are relative to the disk
+      // (and the vertices on the channel's ends)
+      std::vector<std::pair<unsigned int, Tensor<1, 2>>> near_disk;
+      std::vector<std::pair<unsigned int, Point<2>>>     channel_ends;
+      for (unsigned int v = 0; v < moving.hierarchy().n_vertices(); ++v)
+        {
+          const Point<2> &x = moving.hierarchy().get_vertices()[v];
+          if (neighbourhood && x.distance(Point<2>(1.1, 0.2)) < 0.05 + 0.03)
+            near_disk.emplace_back(v, x - Point<2>(1.1, 0.2));
+          if (std::abs(x[0]) < 1e-9 || std::abs(x[0] - 2.2) < 1e-9)
+            channel_ends.emplace_back(v, x);
+        }
       unsigned int readaptations = 0, crossings = 0;
       long         inside_before = -1;
       double       x_previous    = 1.1;
@@ -107,6 +134,34 @@ main(int argc, char **argv)
       CHECK_MSG(worst_aspect < 20.,
                 name + ": no degenerate cell (aspect ratio below 20)");
       // the circumference is 25 cells of h = 0.0125 long
+      if (neighbourhood)
+        {
+          const Point<2> centre(x_previous, 0.2);
+          double         moved_off = 0.;
+          for (const auto &[v, offset] : near_disk)
+            moved_off = std::max(
+              moved_off,
+              (moving.hierarchy().get_vertices()[v] - centre - offset).norm());
+          double ends_moved = 0.;
+          for (const auto &[v, x] : channel_ends)
+            ends_moved
+              = std::max(ends_moved,
+                         moving.hierarchy().get_vertices()[v].distance(x));
+          std::cout << name << ": " << near_disk.size()
+                    << " vertices near the disk off their place relative to "
+                       "it by "
+                    << moved_off << ", channel ends off by " << ends_moved
+                    << '\n';
+          CHECK_MSG(readaptations == 1,
+                    name
+                      + ": adapted only at the start (a fade of 0.3 takes "
+                        "the quarter period's 0.25)");
+          CHECK_MSG(moved_off < 1e-12,
+                    name
+                      + ": the vertices within the carried zone move "
+                        "rigidly with the disk");
+          CHECK_MSG(ends_moved < 1e-12, name + ": the channel's ends stay put");
+        }
       if (method == DeformationParameters::Method::laplace_alpha)
         CHECK_MSG(fewest_projected >= 16,
                   name

@@ -1,6 +1,9 @@
 // A prescribed body on a mesh that follows it (prm/oscillating-cylinder/
-// laplace-kappa.prm, and laplace-alpha.prm whose surface vertices move with
-// the body; coarse level, 5 steps): the cylinder is where
+// laplace-kappa.prm, laplace-alpha.prm whose surface vertices move with
+// the body, and the plain oscillating-cylinder.prm with 'Moving bodies =
+// carry neighbourhood', whose vertices near the cylinder move rigidly with
+// it, so that the nodes in the cylinder stay the same ones; coarse level,
+// 5 steps): the cylinder is where
 // x_c(t) = 1.1 + A sin(2 pi f t) puts it and moves at its derivative; every
 // step's adapted mesh keeps its cells above the quality bound (mesh.dat);
 // and the run on all ranks of MPI_COMM_WORLD reproduces the run on rank 0
@@ -22,12 +25,16 @@ using namespace particulate;
 
 namespace {
   fbm::ParticulateFlowSummary
-  run(MPI_Comm comm, const std::string &case_file, const std::string &output)
+  run(MPI_Comm           comm,
+      const std::string &case_file,
+      const std::string &overrides,
+      const std::string &output)
   {
     auto parameters = fbm::read_particulate_flow_case(
       testing::source_path("prm/oscillating-cylinder/" + case_file),
       "subsection Mesh\n set Refinements = 3\nend\n"
-      "subsection Time\n set End time = 0.05\nend\n");
+      "subsection Time\n set End time = 0.05\nend\n"
+        + overrides);
     parameters.flow.output.directory = output;
     parameters.flow.output.write_vtu = false;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
@@ -56,6 +63,42 @@ namespace {
         }
     return rows == 6 ? worst : -1.; // t = 0 and 5 steps
   }
+
+  /** Fresh adaptations after the start (last column of a mesh.dat). */
+  unsigned int
+  fresh_adaptations(const std::string &file)
+  {
+    std::ifstream in(file);
+    std::string   line;
+    unsigned int  count = 0;
+    bool          first = true;
+    while (std::getline(in, line))
+      if (!line.empty() && line[0] != '#')
+        {
+          if (first)
+            {
+              first = false;
+              continue;
+            }
+          count += line.back() == '1';
+        }
+    return count;
+  }
+
+  /** Smallest and largest count of velocity nodes inside particle 0 over
+   *  its time series (last column of particle_0.dat). */
+  std::pair<double, double>
+  nodes_inside_range(const std::string &file)
+  {
+    const auto rows = testing::read_time_series(file);
+    double     lo = 1e300, hi = -1e300;
+    for (const auto &row : rows)
+      {
+        lo = std::min(lo, row.back());
+        hi = std::max(hi, row.back());
+      }
+    return {lo, hi};
+  }
 } // namespace
 
 int
@@ -69,15 +112,50 @@ main(int argc, char **argv)
     = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   checker.check(n_ranks > 1, "runs on more than one rank");
 
-  for (const std::string method : {"laplace-kappa", "laplace-alpha"})
+  for (const std::string method :
+       {"laplace-kappa", "laplace-alpha", "carry neighbourhood"})
     {
-      const std::string case_file     = method + ".prm",
-                        serial_output = "moving_mesh_serial_" + method;
-      const auto parallel
-        = run(MPI_COMM_WORLD, case_file, "moving_mesh_parallel_" + method);
+      const bool        neighbourhood = method == "carry neighbourhood";
+      const std::string case_file
+        = neighbourhood ? "oscillating-cylinder.prm" : method + ".prm";
+      const std::string overrides
+        = neighbourhood ? "subsection Mesh deformation\n set Moving bodies = "
+                          "carry neighbourhood\n set Carried zone width = "
+                          "0.05\n set Carried zone fade = 0.3\nend\n" :
+                          "";
+      const std::string tag = neighbourhood ? "neighbourhood" : method;
+      const std::string serial_output = "moving_mesh_serial_" + tag;
+      const auto        parallel      = run(MPI_COMM_WORLD,
+                                case_file,
+                                overrides,
+                                "moving_mesh_parallel_" + tag);
       if (rank != 0)
         continue;
-      const auto   serial = run(MPI_COMM_SELF, case_file, serial_output);
+      const auto serial
+        = run(MPI_COMM_SELF, case_file, overrides, serial_output);
+      if (neighbourhood)
+        {
+          // the cylinder moves 0.0196 m, 1.6 node spacings at this level:
+          // on the fixed mesh nodes enter and leave it
+          run(MPI_COMM_SELF, case_file, "", "moving_mesh_serial_fixed_mesh");
+          const auto [fewest_fixed, most_fixed] = nodes_inside_range(
+            "moving_mesh_serial_fixed_mesh/particle_0.dat");
+          checker.check(fewest_fixed < most_fixed,
+                        "on the fixed mesh the count of nodes inside the "
+                        "cylinder changes ("
+                          + std::to_string(long(fewest_fixed)) + " to "
+                          + std::to_string(long(most_fixed)) + ")");
+          checker.check(fresh_adaptations(serial_output + "/mesh.dat") == 0,
+                        method + ": the mesh is carried on every step");
+          const auto [fewest, most]
+            = nodes_inside_range(serial_output + "/particle_0.dat");
+          checker.check(fewest == most && fewest > 0.,
+                        method
+                          + ": the same number of nodes inside the cylinder "
+                            "on every step ("
+                          + std::to_string(long(fewest)) + " to "
+                          + std::to_string(long(most)) + ")");
+        }
       const double omega = 2. * M_PI * 0.25, t = 0.05;
       checker.check_relative(serial.position[0][0] - 1.1,
                              0.25 * std::sin(omega * t),

@@ -49,7 +49,11 @@ namespace particulate {
         readapt,
         /// laplace-alpha: carry the surface vertices with their body,
         /// smooth the rest; adapt afresh only when the quality demands
-        carry_surface
+        carry_surface,
+        /// any method (also none): move the vertices near a body rigidly
+        /// with it, fading out farther away; adapt afresh only when the
+        /// quality demands
+        carry_neighbourhood
       };
       Following following = Following::readapt;
       /// carry_surface: adapt afresh when the smallest scaled Jacobian
@@ -58,6 +62,12 @@ namespace particulate {
       /// carry_surface: adapt afresh when the largest aspect ratio exceeds
       /// this (and that of the last fresh adaptation)
       double readaptation_aspect_ratio = 20.;
+      /// carry_neighbourhood: vertices closer than this to a body's
+      /// surface move rigidly with it [m]
+      double carried_zone_width = 0.01;
+      /// carry_neighbourhood: beyond that, the displacement falls to zero
+      /// over this distance [m]
+      double carried_zone_fade = 0.05;
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -38,7 +38,9 @@ namespace particulate {
     {
     public:
       /** Builds the hierarchy from @p mesh (as core::create_mesh() does).
-       *  Throws std::invalid_argument for `Method = none`. */
+       *  Throws std::invalid_argument for `Method = none` unless the mesh
+       *  carries the neighbourhoods of the bodies (then it is the
+       *  undeformed mesh, carried). */
       MovingMesh(const core::MeshParameters  &mesh,
                  const DeformationParameters &parameters);
 
@@ -55,8 +57,12 @@ namespace particulate {
        * bodies = re-adapt`, adapt() (readapted set in the report). With
        * `carry surface vertices`, LaplaceAlpha::carry() moves the vertices
        * on a surface by @p body_displacement (the displacement over the
-       * step of the body nearest to a point) and smooths the rest; adapt()
-       * only when that leaves a cell worse than `Re-adaptation quality` or
+       * step of the body nearest to a point) and smooths the rest. With
+       * `carry neighbourhood`, every vertex moves by a share of
+       * @p body_displacement: all of it within `Carried zone width` of the
+       * surface, none beyond `Carried zone fade` more (see
+       * carried_share()). Either carrying mode calls adapt() only when
+       * that leaves a cell worse than `Re-adaptation quality` or
        * `Re-adaptation aspect ratio` (and than the last fresh adaptation's
        * worst cell), or a surface vertex could not follow. Throws
        * DeformationError (mesh unchanged) when a fresh adaptation is refused.
@@ -82,20 +88,30 @@ namespace particulate {
         return mesh;
       }
 
-      /** True with `Moving bodies = carry surface vertices`: the mesh
-       *  moves gradually, except when follow() adapts afresh. */
+      /** True unless `Moving bodies = re-adapt`: the mesh moves gradually
+       *  with the bodies, except when follow() adapts afresh. */
       bool
-      carries_surface_vertices() const
+      carries_mesh() const
       {
-        return following == DeformationParameters::Following::carry_surface;
+        return following != DeformationParameters::Following::readapt;
       }
 
       /** The method's name for the log. */
       std::string
       method_name() const
       {
-        return method->name();
+        return method ? method->name() : std::string("none");
       }
+
+      /**
+       * `carry neighbourhood`: the share of its body's displacement that a
+       * vertex at signed distance @p d from the surface takes: 1 up to
+       * `Carried zone width`, then a smoothstep 1 - 3t^2 + 2t^3 (t the
+       * fraction of `Carried zone fade` crossed) down to 0, so that the
+       * mesh velocity is continuous with a continuous gradient.
+       */
+      double
+      carried_share(const double d) const;
 
       /** Checkpoints: the vertex positions and the vertices on a surface
        *  (binary). */
@@ -107,11 +123,20 @@ namespace particulate {
       load(std::istream &in);
 
     private:
+      /** `carry neighbourhood`'s move of every vertex (see follow()). */
+      DeformationReport
+      carry_neighbourhood(
+        const DistanceField<dim> &distance,
+        const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+          &body_displacement);
+
       dealii::Triangulation<dim>            mesh;
       std::unique_ptr<MeshDeformation<dim>> method;
       DeformationParameters::Following      following;
       double                                readaptation_quality;
       double                                readaptation_aspect_ratio;
+      double                                carried_zone_width;
+      double                                carried_zone_fade;
       /// the vertex positions as the case's mesh made them
       std::vector<dealii::Point<dim>> undeformed;
       /// carry_surface: the vertices Laplace-alpha put onto a surface,

@@ -43,7 +43,7 @@ namespace particulate {
 
       /**
        * During the run: follow the particles to their new @p centres
-       * (deformation::MovingMesh::follow(); carried surface vertices move
+       * (deformation::MovingMesh::follow(); carried vertices move
        * with the nearest particle's translation: the shapes are spheres
        * and disks, which look the same however they turn) and move
        * @p flow's mesh there over the coming step @p time_step (ALE), or,
