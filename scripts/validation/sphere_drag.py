@@ -133,12 +133,19 @@ def main():
         # (a) the plain runs, r = 0, 1, 2; (b) the variants (tagged runs)
         fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
         f_ref = next(iter(runs.values()))["reference"][1]
+        shown_tags = {k[2] for k in runs if k[2]
+                      and (args.plot_tags is None or k[2] in args.plot_tags)}
+        tagged_levels = {k[1] for k in runs if k[2] in shown_tags}
         for ax, tagged in zip(axes, (False, True)):
             for key in sorted(runs):
                 frame, level, tag = key
-                if bool(tag) != tagged:
+                # the variants' panel also shows the plain fixed sphere of
+                # their levels, the reference of the moving/fixed column
+                reference = (tagged and not tag and frame == "fixed"
+                             and level in tagged_levels)
+                if bool(tag) != tagged and not reference:
                     continue
-                if tagged and args.plot_tags is not None and tag not in args.plot_tags:
+                if tag and tag not in shown_tags:
                     continue
                 r = runs[key]
                 label = f"{frame}, r={level}{', ' + tag if tag else ''}"
@@ -156,7 +163,8 @@ def main():
             ax.legend(fontsize=8, loc="lower right")
         axes[0].set_ylabel("drag on the sphere [mN]")
         axes[0].set_title("nearest, fixed mesh: r = 0, 1, 2")
-        axes[1].set_title("variants (folder tags)")
+        axes[1].set_title("variants (" + ", ".join(sorted(shown_tags))
+                          + ") and the fixed sphere")
         fig.tight_layout()
         fig.savefig(os.path.join(args.doc, "sphere-drag.png"), dpi=120)
         print(f"wrote {args.doc}/sphere-drag.png and sphere-drag.dat")
