@@ -47,10 +47,11 @@ namespace particulate {
                    != deformation::DeformationParameters::Following::readapt))
         throw std::runtime_error(
           filename
-          + ": subsection 'Mesh deformation' sets a 'Method', but 'Type' in "
-            "subsection 'Simulation' is 'fluid': the mesh adapts to "
-            "particles, and this case has none. Set 'Method = none' or 'Type "
-            "= particulate flow'.");
+          + ": subsection 'Mesh deformation' sets a 'Method' or 'Moving "
+            "bodies', but 'Type' in subsection 'Simulation' is 'fluid': the "
+            "mesh adapts to particles, and this case has none. Set 'Method = "
+            "none' and 'Moving bodies = re-adapt', or 'Type = particulate "
+            "flow'.");
       if (deformation.following
             == deformation::DeformationParameters::Following::carry_surface
           && deformation.method
