@@ -338,6 +338,21 @@ namespace particulate {
         "coarse mesh of many cells). automatic: Chebyshev when "
         "its degree is at most 30 (about what one CG + AMG solve costs in "
         "products on that level), CG + AMG otherwise.");
+      prm.declare_entry(
+        "Multigrid on a moving mesh",
+        "rebuild",
+        Patterns::Selection("rebuild|keep"),
+        "What the geometric multigrid velocity preconditioner does when the "
+        "mesh vertices move (ALE: r-adaptivity, 'Moving bodies' in "
+        "subsection 'Mesh deformation'). rebuild: its level operators, "
+        "smoothers and coarse solve are rebuilt for the new positions after "
+        "every motion (twice per fractional-step theta step, one per kind of "
+        "stage). keep: the V-cycle of the last geometry stays the "
+        "preconditioner (FGMRES always applies the current operator) until "
+        "a solve needs more than 1.5 times the FGMRES iterations of the last "
+        "solve with a fresh V-cycle plus 5, or does not converge; then it is "
+        "rebuilt. A fresh adaptation, which interpolates the flow onto a "
+        "new mesh, and a checkpoint always rebuild.");
       prm.declare_entry("Chebyshev degree",
                         "4",
                         Patterns::Integer(1, 50),
@@ -394,12 +409,13 @@ namespace particulate {
           + velocity_preconditioner
           + "', which is built from the assembled velocity block). Set "
             "both, or 'Velocity operator = assembled'.");
-      multigrid_coarse_solver = prm.get("Multigrid coarse solver");
-      chebyshev_degree        = prm.get_integer("Chebyshev degree");
-      amg_elliptic            = prm.get_bool("AMG elliptic");
-      amg_smoother            = prm.get("AMG smoother");
-      amg_smoother_sweeps     = prm.get_integer("AMG smoother sweeps");
-      verbose                 = prm.get_bool("Verbose");
+      multigrid_coarse_solver  = prm.get("Multigrid coarse solver");
+      multigrid_on_moving_mesh = prm.get("Multigrid on a moving mesh");
+      chebyshev_degree         = prm.get_integer("Chebyshev degree");
+      amg_elliptic             = prm.get_bool("AMG elliptic");
+      amg_smoother             = prm.get("AMG smoother");
+      amg_smoother_sweeps      = prm.get_integer("AMG smoother sweeps");
+      verbose                  = prm.get_bool("Verbose");
       prm.leave_subsection();
     }
 

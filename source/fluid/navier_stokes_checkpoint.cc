@@ -91,7 +91,12 @@ namespace particulate {
     {
       velocity_amg.reset();
       if (velocity_multigrid)
-        velocity_multigrid->forget_linearisations();
+        {
+          velocity_multigrid->forget_linearisations();
+          // a restarted run builds its V-cycles on the current mesh
+          if (multigrid_geometry_is_stale)
+            refresh_multigrid_geometry();
+        }
       velocity_multigrid_is_current  = false;
       schur_approximation_is_current = false;
     }

@@ -116,10 +116,7 @@ namespace particulate {
       has_mesh_velocity     = true;
       assemble_geometric_matrices();
       if (velocity_multigrid)
-        {
-          velocity_multigrid->update_geometry();
-          velocity_multigrid_is_current = false;
-        }
+        refresh_multigrid_geometry();
     }
 
     template void

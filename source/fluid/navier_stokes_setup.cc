@@ -155,6 +155,7 @@ namespace particulate {
                                                        timer);
         }
       velocity_multigrid_is_current = false;
+      multigrid_geometry_is_stale   = false;
       momentum_operator.reset();
       if (parameters.linear_solver.velocity_operator == "matrix-free")
         momentum_operator = std::make_unique<MomentumOperator<dim>>(
@@ -610,9 +611,25 @@ namespace particulate {
       assemble_geometric_matrices();
       if (velocity_multigrid)
         {
-          velocity_multigrid->update_geometry();
-          velocity_multigrid_is_current = false;
+          // a V-cycle is only a preconditioner: with 'keep' the old
+          // geometry's serves until FGMRES needs markedly more iterations
+          // (solve_linear())
+          if (parameters.linear_solver.multigrid_on_moving_mesh == "keep")
+            multigrid_geometry_is_stale = true;
+          else
+            refresh_multigrid_geometry();
         }
+    }
+
+
+
+    template <int dim>
+    void
+    NavierStokes<dim>::refresh_multigrid_geometry()
+    {
+      velocity_multigrid->update_geometry();
+      velocity_multigrid_is_current = false;
+      multigrid_geometry_is_stale   = false;
     }
 
 

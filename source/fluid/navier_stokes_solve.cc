@@ -413,7 +413,9 @@ namespace particulate {
         {
           if (!velocity_multigrid_is_current)
             linearise_velocity_multigrid(stage);
-          fresh = true; // linearised at this very matrix
+          // linearised at this very matrix, unless the mesh has moved
+          // since its geometry was built
+          fresh = !multigrid_geometry_is_stale;
         }
       else if (use_chebyshev)
         {
@@ -472,10 +474,12 @@ namespace particulate {
             stage.theta_implicit * mu,
             steady ? 0. : parameters.properties.density / stage.time_step,
             timer);
+          const unsigned int reference = velocity_multigrid ?
+                                           multigrid_reference_iterations :
+                                           amg_reference_iterations;
           const unsigned int allowed
-            = fresh ?
-                max_iterations :
-                std::min(max_iterations, 2 * amg_reference_iterations + 20);
+            = fresh ? max_iterations :
+                      std::min(max_iterations, 2 * reference + 20);
           SolverControl             control(allowed, tolerance, false, false);
           SolverFGMRES<BlockVector> solver(
             control,
@@ -491,7 +495,13 @@ namespace particulate {
               if (!fresh)
                 {
                   // the kept hierarchy no longer fits the matrix
-                  build_velocity_preconditioner();
+                  if (velocity_multigrid)
+                    {
+                      refresh_multigrid_geometry();
+                      linearise_velocity_multigrid(stage);
+                    }
+                  else
+                    build_velocity_preconditioner();
                   fresh = true;
                   continue;
                 }
@@ -516,7 +526,15 @@ namespace particulate {
           pressure_poisson_solves += laplace_inverse.solves;
           pressure_poisson_iterations += laplace_inverse.iterations;
           const unsigned int iterations = control.last_step();
-          if (use_chebyshev || velocity_multigrid)
+          if (velocity_multigrid)
+            {
+              if (fresh)
+                multigrid_reference_iterations = iterations;
+              else if (iterations > 1.5 * multigrid_reference_iterations + 5)
+                refresh_multigrid_geometry(); // for the next solve
+              return iterations;
+            }
+          if (use_chebyshev)
             return iterations;
           if (fresh)
             amg_reference_iterations = iterations;

@@ -103,11 +103,13 @@ namespace particulate {
       std::string velocity_operator = "assembled";
       /// coarse solve of the velocity V-cycle: "automatic", "Chebyshev"
       /// or "CG + AMG"
-      std::string  multigrid_coarse_solver = "automatic";
-      bool         amg_elliptic            = true;
-      std::string  amg_smoother            = "Chebyshev";
-      unsigned int amg_smoother_sweeps     = 2;
-      bool         verbose                 = false;
+      std::string multigrid_coarse_solver = "automatic";
+      /// "rebuild" or "keep": the velocity V-cycle after a mesh motion
+      std::string  multigrid_on_moving_mesh = "rebuild";
+      bool         amg_elliptic             = true;
+      std::string  amg_smoother             = "Chebyshev";
+      unsigned int amg_smoother_sweeps      = 2;
+      bool         verbose                  = false;
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -421,6 +421,16 @@ namespace particulate {
       /// the last matrix assembly
       std::unique_ptr<VelocityMultigrid<dim>> velocity_multigrid;
       bool velocity_multigrid_is_current = false;
+      /// 'Multigrid on a moving mesh = keep': the mesh moved since the
+      /// V-cycle's geometry was built
+      bool multigrid_geometry_is_stale = false;
+      /// FGMRES iterations of the last solve with a V-cycle of the current
+      /// geometry
+      unsigned int multigrid_reference_iterations = 0;
+      /** Rebuild the V-cycle's geometry for the current vertex positions
+       *  (linearised anew by the next solve). */
+      void
+      refresh_multigrid_geometry();
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
     };
