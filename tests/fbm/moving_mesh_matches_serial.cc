@@ -147,6 +147,32 @@ main(int argc, char **argv)
                           + std::to_string(long(most_fixed)) + ")");
           checker.check(fresh_adaptations(serial_output + "/mesh.dat") == 0,
                         method + ": the mesh is carried on every step");
+          // the geometric multigrid on the moving mesh, its V-cycle
+          // rebuilt after every motion or kept while FGMRES converges:
+          // a preconditioner only, so the same flow
+          const std::string multigrid
+            = "subsection Linear solver\n set Velocity preconditioner = "
+              "geometric multigrid\n set Multigrid on a moving mesh = ";
+          const auto rebuilt = run(MPI_COMM_SELF,
+                                   case_file,
+                                   overrides + multigrid + "rebuild\nend\n",
+                                   "moving_mesh_serial_multigrid_rebuild");
+          const auto kept    = run(MPI_COMM_SELF,
+                                case_file,
+                                overrides + multigrid + "keep\nend\n",
+                                "moving_mesh_serial_multigrid_keep");
+          checker.check_relative(kept.force[0][0],
+                                 rebuilt.force[0][0],
+                                 1e-5,
+                                 method
+                                   + ": drag with the V-cycle kept across "
+                                     "mesh motions");
+          checker.check_relative(rebuilt.force[0][0],
+                                 serial.force[0][0],
+                                 1e-5,
+                                 method
+                                   + ": drag with the geometric multigrid "
+                                     "against AMG");
           const auto [fewest, most]
             = nodes_inside_range(serial_output + "/particle_0.dat");
           checker.check(fewest == most && fewest > 0.,
