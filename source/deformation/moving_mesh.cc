@@ -43,6 +43,11 @@ namespace particulate {
 
 
     template <int dim>
+    MovingMesh<dim>::~MovingMesh() = default;
+
+
+
+    template <int dim>
     DeformationReport
     MovingMesh<dim>::adapt(const DistanceField<dim> &distance)
     {
@@ -142,8 +147,12 @@ namespace particulate {
       const std::function<Tensor<1, dim>(const Point<dim> &)>
         &body_displacement)
     {
-      const VertexHierarchy<dim> hierarchy(mesh);
-      std::vector<Point<dim>>    positions = mesh.get_vertices();
+      // vertices on the boundary only slide along its planes, so the
+      // hierarchy's boundary normals stay valid for every carried mesh
+      if (!carried_hierarchy)
+        carried_hierarchy = std::make_unique<VertexHierarchy<dim>>(mesh);
+      const VertexHierarchy<dim> &hierarchy = *carried_hierarchy;
+      std::vector<Point<dim>>     positions = mesh.get_vertices();
       for (unsigned int v = 0; v < positions.size(); ++v)
         {
           const Tensor<1, dim> shift = body_displacement(positions[v]);

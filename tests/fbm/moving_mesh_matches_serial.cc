@@ -153,14 +153,14 @@ main(int argc, char **argv)
           const std::string multigrid
             = "subsection Linear solver\n set Velocity preconditioner = "
               "geometric multigrid\n set Multigrid on a moving mesh = ";
-          const auto rebuilt = run(MPI_COMM_SELF,
-                                   case_file,
-                                   overrides + multigrid + "rebuild\nend\n",
-                                   "moving_mesh_serial_multigrid_rebuild");
-          const auto kept    = run(MPI_COMM_SELF,
-                                case_file,
-                                overrides + multigrid + "keep\nend\n",
-                                "moving_mesh_serial_multigrid_keep");
+          const auto with_multigrid = [&](const std::string &policy) {
+            return run(MPI_COMM_SELF,
+                       case_file,
+                       overrides + multigrid + policy + "\nend\n",
+                       "moving_mesh_serial_multigrid_" + policy);
+          };
+          const auto rebuilt = with_multigrid("rebuild");
+          const auto kept    = with_multigrid("keep");
           checker.check_relative(kept.force[0][0],
                                  rebuilt.force[0][0],
                                  1e-5,

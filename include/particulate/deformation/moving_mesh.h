@@ -15,6 +15,9 @@
 
 namespace particulate {
   namespace deformation {
+    template <int dim>
+    class VertexHierarchy;
+
     /**
      * A flow mesh that follows moving bodies (thesis §6.3): every rank holds
      * the whole refinement hierarchy of the case's mesh; each time step
@@ -43,6 +46,7 @@ namespace particulate {
        *  undeformed mesh, carried). */
       MovingMesh(const core::MeshParameters  &mesh,
                  const DeformationParameters &parameters);
+      ~MovingMesh();
 
       /**
        * Adapt the undeformed mesh to the surfaces that @p distance
@@ -137,6 +141,9 @@ namespace particulate {
       double                                readaptation_aspect_ratio;
       double                                carried_zone_width;
       double                                carried_zone_fade;
+      /// carry_neighbourhood: the mesh's levels, edges and boundary
+      /// planes, which carrying does not change (built at the first carry)
+      std::unique_ptr<const VertexHierarchy<dim>> carried_hierarchy;
       /// the vertex positions as the case's mesh made them
       std::vector<dealii::Point<dim>> undeformed;
       /// carry_surface: the vertices Laplace-alpha put onto a surface,
