@@ -12,6 +12,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <chrono>
 #include <set>
 
 #include "momentum_operator.h"
@@ -156,6 +157,9 @@ namespace particulate {
         }
       velocity_multigrid_is_current = false;
       multigrid_geometry_is_stale   = false;
+      multigrid_build_seconds       = 0.;
+      multigrid_extra_seconds       = 0.;
+      fresh_multigrid_iterations.clear();
       momentum_operator.reset();
       if (parameters.linear_solver.velocity_operator == "matrix-free")
         momentum_operator = std::make_unique<MomentumOperator<dim>>(
@@ -627,9 +631,14 @@ namespace particulate {
     void
     NavierStokes<dim>::refresh_multigrid_geometry()
     {
+      const auto start = std::chrono::steady_clock::now();
       velocity_multigrid->update_geometry();
       velocity_multigrid_is_current = false;
       multigrid_geometry_is_stale   = false;
+      multigrid_build_seconds       = std::chrono::duration<double>(
+                                  std::chrono::steady_clock::now() - start)
+                                  .count();
+      multigrid_extra_seconds = 0.;
     }
 
 

@@ -6,6 +6,8 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -412,7 +414,14 @@ namespace particulate {
       if (velocity_multigrid)
         {
           if (!velocity_multigrid_is_current)
-            linearise_velocity_multigrid(stage);
+            {
+              const auto start = std::chrono::steady_clock::now();
+              linearise_velocity_multigrid(stage);
+              multigrid_build_seconds
+                += std::chrono::duration<double>(
+                     std::chrono::steady_clock::now() - start)
+                     .count();
+            }
           // linearised at this very matrix, unless the mesh has moved
           // since its geometry was built
           fresh = !multigrid_geometry_is_stale;
@@ -485,7 +494,8 @@ namespace particulate {
             control,
             SolverFGMRES<BlockVector>::AdditionalData(
               parameters.linear_solver.krylov_size));
-          newton_update = 0;
+          newton_update    = 0;
+          const auto start = std::chrono::steady_clock::now();
           try
             {
               solver.solve(system, newton_update, system_rhs, preconditioner);
@@ -529,9 +539,54 @@ namespace particulate {
           if (velocity_multigrid)
             {
               if (fresh)
-                multigrid_reference_iterations = iterations;
-              else if (iterations > 1.5 * multigrid_reference_iterations + 5)
-                refresh_multigrid_geometry(); // for the next solve
+                {
+                  auto &recent = fresh_multigrid_iterations;
+                  recent.push_back(iterations);
+                  if (recent.size() > 5)
+                    recent.erase(recent.begin());
+                  std::vector<unsigned int> sorted = recent;
+                  std::nth_element(sorted.begin(),
+                                   sorted.begin() + sorted.size() / 2,
+                                   sorted.end());
+                  multigrid_reference_iterations = sorted[sorted.size() / 2];
+                  if (parameters.linear_solver.verbose)
+                    pcout << "      fresh V-cycle: " << iterations
+                          << " FGMRES iterations (reference now "
+                          << multigrid_reference_iterations << ")" << std::endl;
+                }
+              else
+                {
+                  // Rent or buy: the stale V-cycle is rebuilt once its
+                  // extra iterations have cost what building it did, so a
+                  // run pays at most about twice the better of always
+                  // rebuilding and never rebuilding. Both times are the
+                  // slowest rank's, so that all ranks decide alike.
+                  const double seconds
+                    = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+                  multigrid_extra_seconds
+                    = std::max(0.,
+                               multigrid_extra_seconds
+                                 + (static_cast<double>(iterations)
+                                    - multigrid_reference_iterations)
+                                     * seconds / std::max(iterations, 1u));
+                  const double extra
+                    = Utilities::MPI::max(multigrid_extra_seconds,
+                                          communicator);
+                  const double build
+                    = Utilities::MPI::max(multigrid_build_seconds,
+                                          communicator);
+                  if (parameters.linear_solver.verbose)
+                    pcout << "      kept V-cycle: " << iterations
+                          << " FGMRES iterations against "
+                          << multigrid_reference_iterations
+                          << " with a fresh one; extra iterations have cost "
+                          << extra << " s, building it " << build << " s"
+                          << (extra >= build ? ": rebuilt" : "") << std::endl;
+                  if (extra >= build)
+                    refresh_multigrid_geometry(); // for the next solve
+                }
               return iterations;
             }
           if (use_chebyshev)

@@ -424,9 +424,19 @@ namespace particulate {
       /// 'Multigrid on a moving mesh = keep': the mesh moved since the
       /// V-cycle's geometry was built
       bool multigrid_geometry_is_stale = false;
-      /// FGMRES iterations of the last solve with a V-cycle of the current
-      /// geometry
-      unsigned int multigrid_reference_iterations = 0;
+      /// FGMRES iterations of the last solves (up to five) with a V-cycle of
+      /// the geometry they solved on, and their median: what a fresh V-cycle
+      /// needs, robust against the odd hard solve (a start from rest, a
+      /// re-solve after a kept V-cycle failed) and the odd easy one (the
+      /// last Newton step of a stage)
+      std::vector<unsigned int> fresh_multigrid_iterations;
+      unsigned int              multigrid_reference_iterations = 0;
+      /// 'keep': wall time spent building the V-cycles of the current
+      /// geometry (the geometry and every linearisation since), and the wall
+      /// time the FGMRES iterations beyond the reference count have cost
+      /// since (net of solves that needed fewer)
+      double multigrid_build_seconds = 0.;
+      double multigrid_extra_seconds = 0.;
       /** Rebuild the V-cycle's geometry for the current vertex positions
        *  (linearised anew by the next solve). */
       void
