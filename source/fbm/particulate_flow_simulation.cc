@@ -427,6 +427,18 @@ namespace particulate {
           });
           pcout << "Restarting from " << checkpoint.directory()
                 << " at t = " << t << " s (step " << step << ")" << std::endl;
+          // A fixed step comes from the parameter file: the checkpoint's may
+          // be a last step shortened to meet the old 'End time', and a user
+          // may have changed 'Time step' on purpose. An adaptive step goes
+          // on from where it was.
+          if (!time_p.adaptive && dt != time_p.time_step)
+            {
+              pcout << "Time step: " << time_p.time_step << " s from "
+                    << parameter_file
+                    << " (the checkpointed run's last step: " << dt << " s)"
+                    << std::endl;
+              dt = time_p.time_step;
+            }
         }
 
       // --- output --------------------------------------------------------

@@ -20,9 +20,11 @@
 // deformed positions, which vertices are on the surface, and where the
 // disk was at the last fresh adaptation; mesh.dat must continue too), and
 // with the matrix-free velocity operator and the geometric multigrid (whose
-// V-cycles, kept across steps, are rebuilt at every checkpoint). Runs on
-// all ranks of MPI_COMM_WORLD; then rank 0 alone tries the restart and must be
-// told to use the original number of ranks.
+// V-cycles, kept across steps, are rebuilt at every checkpoint). A run whose
+// last step was shortened to meet its End time continues, restarted to a
+// later one, with the full time step. Runs on all ranks of MPI_COMM_WORLD;
+// then rank 0 alone tries the restart and must be told to use the original
+// number of ranks.
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
@@ -233,6 +235,33 @@ main(int argc, char **argv)
                         "the restarted run carried surface vertices" + what);
         }
     }
+
+  // a run whose last step was shortened to meet its 'End time' goes on,
+  // continued to a later one, with the full 'Time step' (not with the
+  // shortened step its checkpoint ended with): 10 steps from 20.5 dt
+  {
+    const std::string dir = "restart_shortened";
+    if (root)
+      std::filesystem::remove_all(dir);
+    MPI_Barrier(comm);
+    run(comm, dir, 20.5 * dt, false);
+    run(comm, dir, 30.5 * dt, true);
+    if (root)
+      {
+        std::istringstream rows(
+          rows_between(dir + "/particle_0.dat", 20.75 * dt, 31. * dt));
+        std::vector<double> times;
+        for (std::string line; std::getline(rows, line);)
+          times.push_back(std::stod(line));
+        std::cout << "continued after a shortened last step: " << times.size()
+                  << " steps, the first to t = "
+                  << (times.empty() ? 0. : times.front() / dt) << " dt\n";
+        checker.check(times.size() == 10
+                        && std::abs(times.front() - 21.5 * dt) < 1e-9,
+                      "a restart after a shortened last step continues with "
+                      "the full time step");
+      }
+  }
 
   // a checkpoint of n ranks does not restart on another number of ranks
   if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1 && root)
