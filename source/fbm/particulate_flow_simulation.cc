@@ -420,6 +420,10 @@ namespace particulate {
                 // the mesh velocity this sets is replaced before the next
                 // step uses one; the geometric matrices are what counts
                 flow.move_mesh([&]() { adapted_mesh->load(in); }, dt);
+                // V-cycles for the loaded positions, as the continued run
+                // has them after its checkpoint ('keep' would otherwise go
+                // on with those of the undeformed mesh)
+                flow.reset_preconditioners();
                 interface.setup();
               }
             flow_output.resume(core::read_binary_series(in));

@@ -536,7 +536,11 @@ namespace particulate {
           const unsigned int iterations = control.last_step();
           if (velocity_multigrid)
             {
-              if (fresh)
+              // with no fresh solve yet (a run or restart whose mesh moved
+              // before its first solve) the first one stands in: its V-cycle
+              // is one motion old, and counting all of its iterations as
+              // extra would rebuild for nothing
+              if (fresh || fresh_multigrid_iterations.empty())
                 {
                   auto &recent = fresh_multigrid_iterations;
                   recent.push_back(iterations);
@@ -548,8 +552,9 @@ namespace particulate {
                                    sorted.end());
                   multigrid_reference_iterations = sorted[sorted.size() / 2];
                   if (parameters.linear_solver.verbose)
-                    pcout << "      fresh V-cycle: " << iterations
-                          << " FGMRES iterations (reference now "
+                    pcout << (fresh ? "      fresh V-cycle: " :
+                                      "      first solve, taken as fresh: ")
+                          << iterations << " FGMRES iterations (reference now "
                           << multigrid_reference_iterations << ")" << std::endl;
                 }
               else

@@ -425,7 +425,8 @@ namespace particulate {
       /// V-cycle's geometry was built
       bool multigrid_geometry_is_stale = false;
       /// FGMRES iterations of the last solves (up to five) with a V-cycle of
-      /// the geometry they solved on, and their median: what a fresh V-cycle
+      /// the geometry they solved on (or, before any such solve, the first
+      /// one after the build), and their median: what a fresh V-cycle
       /// needs, robust against the odd hard solve (a start from rest, a
       /// re-solve after a kept V-cycle failed) and the odd easy one (the
       /// last Newton step of a stage)
