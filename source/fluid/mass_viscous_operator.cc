@@ -13,7 +13,7 @@ namespace particulate {
     template <int dim, typename Number>
     void
     MassViscousOperator<dim, Number>::initialize(
-      std::shared_ptr<const MatrixFree<dim, Number>> matrix_free)
+      std::shared_ptr<const MatrixFree> matrix_free)
     {
       data = std::move(matrix_free);
       identity_rows.clear();
@@ -166,7 +166,7 @@ namespace particulate {
     template <int dim, typename Number>
     void
     MassViscousOperator<dim, Number>::local_apply(
-      const MatrixFree<dim, Number>               &matrix_free,
+      const MatrixFree                            &matrix_free,
       VectorType                                  &dst,
       const VectorType                            &src,
       const std::pair<unsigned int, unsigned int> &range) const

@@ -5,6 +5,11 @@
 // multigrid level (used only by velocity_multigrid.cc, the one translation
 // unit that pays for the matrix-free templates).
 
+// simd.h first: it must precede every deal.II header
+// clang-format off
+#include "simd.h"
+// clang-format on
+
 #include <particulate/fluid/viscosity_model.h>
 
 #include <deal.II/base/subscriptor.h>
@@ -17,6 +22,7 @@
 
 #include <memory>
 #include <vector>
+
 
 namespace particulate {
   namespace fluid {
@@ -45,11 +51,13 @@ namespace particulate {
     public:
       using VectorType = dealii::LinearAlgebra::distributed::Vector<Number>;
       using value_type = Number;
-      using VectorizedArray = dealii::VectorizedArray<Number>;
-      using Integrator      = dealii::FEEvaluation<dim, 2, 3, dim, Number>;
+      using VectorizedArray = SimdArray<Number>;
+      using MatrixFree      = dealii::MatrixFree<dim, Number, VectorizedArray>;
+      using Integrator
+        = dealii::FEEvaluation<dim, 2, 3, dim, Number, VectorizedArray>;
 
       void
-      initialize(std::shared_ptr<const dealii::MatrixFree<dim, Number>> data);
+      initialize(std::shared_ptr<const MatrixFree> data);
 
       /**
        * The coefficients. @p velocity, the linearisation point on this
@@ -124,7 +132,7 @@ namespace particulate {
 
     private:
       void
-      local_apply(const dealii::MatrixFree<dim, Number>       &data,
+      local_apply(const MatrixFree                            &data,
                   VectorType                                  &dst,
                   const VectorType                            &src,
                   const std::pair<unsigned int, unsigned int> &range) const;
@@ -134,7 +142,7 @@ namespace particulate {
       void
       update_inverse_diagonal();
 
-      std::shared_ptr<const dealii::MatrixFree<dim, Number>> data;
+      std::shared_ptr<const MatrixFree> data;
       /// diag(M) and diag(K) of the unit-coefficient mass and viscous
       /// operators (geometry only)
       VectorType mass_diagonal, viscous_diagonal;

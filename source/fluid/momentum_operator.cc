@@ -1,3 +1,8 @@
+// simd.h first: it must precede every deal.II header
+// clang-format off
+#include "simd.h"
+// clang-format on
+
 #include "momentum_operator.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -12,6 +17,7 @@
 #include <cmath>
 #include <functional>
 
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
@@ -21,8 +27,8 @@ namespace particulate {
        *  velocity gradient G. */
       template <int dim>
       double
-      shear_rate(const Tensor<2, dim, VectorizedArray<double>> &G,
-                 const unsigned int                             lane)
+      shear_rate(const Tensor<2, dim, SimdArray<double>> &G,
+                 const unsigned int                       lane)
       {
         double DD = 0.;
         for (unsigned int c = 0; c < dim; ++c)
@@ -41,8 +47,9 @@ namespace particulate {
     struct MomentumOperator<dim>::Implementation
     {
       using VectorType      = LinearAlgebra::distributed::Vector<double>;
-      using VectorizedArray = dealii::VectorizedArray<double>;
-      using Integrator      = FEEvaluation<dim, 2, 3, dim, double>;
+      using VectorizedArray = SimdArray<double>;
+      using MatrixFree      = dealii::MatrixFree<dim, double, VectorizedArray>;
+      using Integrator = FEEvaluation<dim, 2, 3, dim, double, VectorizedArray>;
 
       Implementation(const DoFHandler<dim> &dofs,
                      const IndexSet        &owned,
@@ -63,9 +70,8 @@ namespace particulate {
         // in vmult instead.
         AffineConstraints<double> none;
         none.close();
-        typename MatrixFree<dim, double>::AdditionalData data;
-        data.tasks_parallel_scheme
-          = MatrixFree<dim, double>::AdditionalData::none;
+        typename MatrixFree::AdditionalData data;
+        data.tasks_parallel_scheme = MatrixFree::AdditionalData::none;
         data.mapping_update_flags
           = update_values | update_gradients | update_JxW_values;
         matrix_free.reinit(mapping, dofs, none, QGauss<1>(3), data);
@@ -90,7 +96,7 @@ namespace particulate {
       }
 
       void
-      local_apply(const MatrixFree<dim, double>               &data,
+      local_apply(const MatrixFree                            &data,
                   VectorType                                  &dst,
                   const VectorType                            &src,
                   const std::pair<unsigned int, unsigned int> &range) const
@@ -132,7 +138,7 @@ namespace particulate {
       const IndexSet         owned;
       const Mapping<dim>    &mapping;
 
-      MatrixFree<dim, double> matrix_free;
+      MatrixFree matrix_free;
       /// local indices of the constrained rows
       std::vector<unsigned int> constrained_rows;
 
@@ -316,11 +322,12 @@ namespace particulate {
       const VectorizedArray nu_constant(
         theta * viscosity_model.reference_viscosity());
 
-      const std::function<void(const MatrixFree<dim, double> &,
+      using MatrixFree = typename Implementation::MatrixFree;
+      const std::function<void(const MatrixFree &,
                                VectorType &,
                                const VectorType &,
                                const std::pair<unsigned int, unsigned int> &)>
-        kernel = [&](const MatrixFree<dim, double>               &data,
+        kernel = [&](const MatrixFree                            &data,
                      VectorType                                  &out,
                      const VectorType                            &u,
                      const std::pair<unsigned int, unsigned int> &range) {

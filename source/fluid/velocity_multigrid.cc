@@ -1,3 +1,8 @@
+// simd.h first: it must precede every deal.II header
+// clang-format off
+#include "simd.h"
+// clang-format on
+
 #include <particulate/fluid/velocity_multigrid.h>
 
 #include <deal.II/base/mg_level_object.h>
@@ -37,6 +42,9 @@ namespace particulate {
 
     namespace {
       using LevelVector = LinearAlgebra::distributed::Vector<float>;
+      /// level geometry and DoF maps, a batch of cells per SIMD instruction
+      template <int dim>
+      using LevelMatrixFree = MatrixFree<dim, float, SimdArray<float>>;
 
       /**
        * The coarse level (the unrefined input mesh), solved one of two ways:
@@ -168,7 +176,7 @@ namespace particulate {
       std::vector<types::global_dof_index> active_to_level;
       std::vector<types::global_dof_index> masked_active_dofs;
 
-      MGLevelObject<std::shared_ptr<const MatrixFree<dim, float>>> matrix_free;
+      MGLevelObject<std::shared_ptr<const LevelMatrixFree<dim>>> matrix_free;
       AffineConstraints<float>         coarse_constraints;
       MGTransferMatrixFree<dim, float> transfer;
       /// the coarse matrix's pattern, locally owned rows, and the constant
@@ -421,13 +429,13 @@ namespace particulate {
             mg_constrained_dofs.get_boundary_indices(level));
           constraints.close();
 
-          typename MatrixFree<dim, float>::AdditionalData data;
+          typename LevelMatrixFree<dim>::AdditionalData data;
           data.tasks_parallel_scheme
-            = MatrixFree<dim, float>::AdditionalData::none;
+            = LevelMatrixFree<dim>::AdditionalData::none;
           data.mapping_update_flags
             = update_values | update_gradients | update_JxW_values;
           data.mg_level   = level;
-          auto level_data = std::make_shared<MatrixFree<dim, float>>();
+          auto level_data = std::make_shared<LevelMatrixFree<dim>>();
           level_data->reinit(mapping, dofs, constraints, QGauss<1>(3), data);
           matrix_free[level]  = level_data;
           partitioners[level] = level_data->get_vector_partitioner();
