@@ -104,7 +104,6 @@ namespace particulate {
                                 | update_quadrature_points | update_JxW_values);
       const unsigned int          n_q = quadrature.size();
       std::vector<Tensor<2, dim>> sigma(n_q);
-      std::vector<Tensor<1, dim>> grad_alpha(n_q);
 
       const unsigned int              n_nodes = interface.nodes_per_cell();
       const std::vector<unsigned int> x_dof   = x_dof_of_nodes(fe, n_nodes);
@@ -123,30 +122,25 @@ namespace particulate {
 
           fe_values.reinit(cells[c]);
           fluid::cauchy_stress(flow, fe_values, sigma);
-          for (const int b : bodies_here)
+          for (unsigned int k = 0; k < n_nodes; ++k)
             {
+              const int b = interface.body_of_node(nodes[k]);
+              if (b < 0)
+                continue;
+              // the share of covered node k: -int sigma . grad phi_k
+              Tensor<1, dim> share;
               for (unsigned int q = 0; q < n_q; ++q)
-                {
-                  grad_alpha[q] = 0;
-                  for (unsigned int k = 0; k < n_nodes; ++k)
-                    if (interface.body_of_node(nodes[k]) == b)
-                      grad_alpha[q]
-                        += fe_values.shape_grad_component(x_dof[k], q, 0);
-                }
-              for (unsigned int q = 0; q < n_q; ++q)
-                {
-                  const Tensor<1, dim> f
-                    = -(sigma[q] * grad_alpha[q]) * fe_values.JxW(q);
-                  Eigen::Vector3d f3  = Eigen::Vector3d::Zero(),
-                                  r3  = Eigen::Vector3d::Zero();
-                  const Point<dim> &x = fe_values.quadrature_point(q);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    {
-                      f3[d] = f[d];
-                      r3[d] = x[d] - centres[b][d];
-                    }
-                  add_load(sums, b, f3, r3);
-                }
+                share
+                  -= (sigma[q] * fe_values.shape_grad_component(x_dof[k], q, 0))
+                     * fe_values.JxW(q);
+              Eigen::Vector3d f3 = Eigen::Vector3d::Zero(),
+                              r3
+                              = interface.node_position(nodes[k]) - centres[b];
+              for (unsigned int d = 0; d < dim; ++d)
+                f3[d] = share[d];
+              if (dim == 2)
+                r3[2] = 0.;
+              add_load(sums, b, f3, r3);
             }
         }
 

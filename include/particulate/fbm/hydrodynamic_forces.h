@@ -31,6 +31,18 @@ namespace particulate {
      * inside body i, 0 elsewhere. Only cells with nodes on both sides (the
      * cut cells) contribute; the result is summed over all ranks.
      *
+     * Both are evaluated node by node: covered node k of body i carries the
+     * share g_k = - int sigma . grad phi_k (phi_k its Q2 basis function),
+     * F_i = sum g_k and T_i = sum (x_k - X_i) x g_k. The force is the
+     * integral above exactly (alpha_i = sum phi_k); the torque is its
+     * integrand with (x - X_i) alpha_i replaced by its Q2 interpolant, i.e.
+     * the discrete momentum equation tested with the rigid rotation at the
+     * covered nodes. Why: the pressure modes of cut cells that the
+     * divergence of the free velocities does not see (doc/fbm.md,
+     * "Pressure") are then invisible to the torque as they are to the
+     * force; with the integrand as written, a 3D cylinder spanning a slab
+     * saw a torque a hundred times the 2D disk's from them.
+     *
      * @param centres the reference points X_i of the torques [m]
      */
     template <int dim>
