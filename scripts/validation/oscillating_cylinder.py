@@ -7,7 +7,9 @@ Usage:
 
 PATH is either the output folder of a `particulate` run of
 prm/oscillating-cylinder/*.prm (its particle_0.dat holds the force F_x, F_y
-per unit depth) or the forces.dat of
+per unit depth in 2D, on the whole cylinder of a 3D slab run, which is
+divided by the cylinder's 'Length' read from the folder's
+used_parameters.prm) or the forces.dat of
 validation_oscillating_cylinder_body_fitted (c_d, c_l directly). The first
 body-fitted run given is the reference of the total-variation ratio.
 
@@ -40,11 +42,30 @@ def read_table(path):
     return {name: [r[i] for r in rows] for i, name in enumerate(header)}
 
 
+def span_of(folder):
+    """The cylinder's length along z of a 3D run (the force is per this
+    span), 1 for a 2D run (the force is per unit depth already)."""
+    entries, section = {}, []
+    with open(os.path.join(folder, "used_parameters.prm")) as f:
+        for line in f:
+            words = line.split("#")[0].split()
+            if words[:1] == ["subsection"]:
+                section.append(" ".join(words[1:]))
+            elif words[:1] == ["end"]:
+                section.pop()
+            elif words[:1] == ["set"] and "=" in line:
+                name, value = line.split("#")[0].split("=", 1)
+                entries[(" / ".join(section), name.split(None, 1)[1].strip())] = value.strip()
+    if entries.get(("Simulation", "Dimension")) == "3":
+        return float(entries[("Particles", "Length")])
+    return 1.0
+
+
 def coefficients(path):
     """(t, c_d, c_l, body_fitted) of one run."""
     if os.path.isdir(path):
         table = read_table(os.path.join(path, "particle_0.dat"))
-        scale = 2 / (RHO * U * U * D)
+        scale = 2 / (RHO * U * U * D * span_of(path))
         return (table["time"], [scale * f for f in table["F_x"]],
                 [scale * f for f in table["F_y"]], False)
     table = read_table(path)

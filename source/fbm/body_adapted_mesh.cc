@@ -22,6 +22,9 @@ namespace particulate {
         // disk is a cylinder along z whose caps are far from that plane
         shape = std::make_unique<geometry::Cylinder>(particles.radius,
                                                      1e3 * particles.radius);
+      else if (particles.shape == ParticleParameters::Shape::cylinder)
+        shape = std::make_unique<geometry::Cylinder>(particles.radius,
+                                                     0.5 * particles.length);
       else
         shape = std::make_unique<geometry::Sphere>(particles.radius);
     }

@@ -81,13 +81,25 @@ namespace particulate {
       prm.enter_subsection("Particles");
       prm.declare_entry("Shape",
                         "sphere",
-                        Patterns::Selection("sphere|disk"),
-                        "Shape of every particle: 'sphere' (3D runs) or "
-                        "'disk' (2D runs; a cylinder of unit depth).");
+                        Patterns::Selection("sphere|disk|cylinder"),
+                        "Shape of every particle: 'sphere' (3D runs), "
+                        "'disk' (2D runs; a cylinder of unit depth) or "
+                        "'cylinder' (3D runs: a circular cylinder of radius "
+                        "'Radius' whose axis runs along z through the "
+                        "particle's position, of length 'Length'; e.g. a "
+                        "cylinder spanning a slab-shaped channel).");
       prm.declare_entry("Radius",
                         "0.0075",
                         Patterns::Double(0.),
                         "Particle radius [m].");
+      prm.declare_entry("Length",
+                        "0",
+                        Patterns::Double(0.),
+                        "Shape = cylinder: length of the cylinder along z "
+                        "[m], centred at the particle's position. A cylinder "
+                        "that spans a channel from wall to wall has the "
+                        "channel's depth; leave the z faces out of 'Domain "
+                        "walls' then, or the engine sees it touching them.");
       prm.declare_entry("Density",
                         "1120",
                         Patterns::Double(0.),
@@ -276,13 +288,17 @@ namespace particulate {
     ParticleParameters::parse(ParameterHandler &prm, const unsigned int dim)
     {
       prm.enter_subsection("Particles");
-      shape   = prm.get("Shape") == "disk" ? Shape::disk : Shape::sphere;
-      radius  = prm.get_double("Radius");
-      density = prm.get_double("Density");
-      const std::string m = prm.get("Motion");
-      motion              = m == "fixed"      ? Motion::fixed :
-                            m == "prescribed" ? Motion::prescribed :
-                                                Motion::free;
+      const std::string shape_name = prm.get("Shape");
+      shape                        = shape_name == "disk"     ? Shape::disk :
+                                     shape_name == "cylinder" ? Shape::cylinder :
+                                                                Shape::sphere;
+      radius                       = prm.get_double("Radius");
+      length                       = prm.get_double("Length");
+      density                      = prm.get_double("Density");
+      const std::string m          = prm.get("Motion");
+      motion                       = m == "fixed"      ? Motion::fixed :
+                                     m == "prescribed" ? Motion::prescribed :
+                                                         Motion::free;
       prescribed_displacement.parse(prm, "Prescribed displacement");
       positions    = parse_points(prm.get("Positions"), dim, "Positions");
       velocities   = parse_points(prm.get("Velocities"), dim, "Velocities");
@@ -391,8 +407,16 @@ namespace particulate {
                    "a wall.");
       if (dim == 2 && shape != Shape::disk)
         fail("Shape", "a 2D run needs 'disk'.");
-      if (dim == 3 && shape != Shape::sphere)
-        fail("Shape", "a 3D run needs 'sphere'.");
+      if (dim == 3 && shape == Shape::disk)
+        fail("Shape", "a 3D run needs 'sphere' or 'cylinder'.");
+      if (shape == Shape::cylinder && !(length > 0.))
+        fail("Length",
+             "a 'cylinder' needs its length along z [m] (the channel's depth "
+             "for a cylinder that spans it).");
+      if (shape == Shape::cylinder && containment_backend == "cuda")
+        fail("Containment backend",
+             "the cuda containment engine takes spheres and 2D disks only; "
+             "set 'cpu' or 'auto' for a 'cylinder'.");
       if (!(radius > 0.))
         fail("Radius", "must be positive.");
       if (!(density > 0.))

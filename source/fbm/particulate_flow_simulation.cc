@@ -72,14 +72,23 @@ namespace particulate {
         return Utilities::MPI::min(h, comm);
       }
 
-      /** The particle's volume as the engine sees it (per unit depth in
-       *  2D: a cylinder of length 1). */
-      double
-      particle_volume(const ParticleParameters &p)
+      /** The rigid engine's shape of every particle. The 2D disk is a
+       *  cylinder along z of unit length (the engine is 3D; its volume and
+       *  inertia are then those per unit depth). */
+      std::shared_ptr<const rigid::Shape>
+      particle_shape(const ParticleParameters &p)
       {
-        return p.shape == ParticleParameters::Shape::disk ?
-                 M_PI * p.radius * p.radius :
-                 4. / 3. * M_PI * std::pow(p.radius, 3);
+        switch (p.shape)
+          {
+            case ParticleParameters::Shape::disk:
+              return std::make_shared<rigid::Cylinder>(p.radius, 0.5);
+            case ParticleParameters::Shape::cylinder:
+              return std::make_shared<rigid::Cylinder>(p.radius,
+                                                       0.5 * p.length);
+            case ParticleParameters::Shape::sphere:
+              break;
+          }
+        return std::make_shared<rigid::Sphere>(p.radius);
       }
 
       /** The marking named by 'Covered nodes' (a validated selection). */
@@ -236,7 +245,9 @@ namespace particulate {
       const double rho_f = flow_p.fluid.properties.density;
       const double rho_p = particle_p.density;
       const bool   free = particle_p.motion == ParticleParameters::Motion::free;
-      const double volume = particle_volume(particle_p);
+      const std::shared_ptr<const rigid::Shape> shape
+        = particle_shape(particle_p);
+      const double volume = shape->volume();
       // Added-mass correction: the engine integrates the particle with mass
       // m + m_a (density rho_p + C rho_f); the force gets + m_a a_old.
       const double rho_engine
@@ -262,11 +273,6 @@ namespace particulate {
       wall_material.name                   = "wall";
       const unsigned int wall_material_id  = world.add_material(wall_material);
 
-      std::shared_ptr<const rigid::Shape> shape;
-      if (particle_p.shape == ParticleParameters::Shape::disk)
-        shape = std::make_shared<rigid::Cylinder>(particle_p.radius, 0.5);
-      else
-        shape = std::make_shared<rigid::Sphere>(particle_p.radius);
       std::vector<rigid::BodyId> ids;
       for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
         {
@@ -312,11 +318,18 @@ namespace particulate {
       if (particle_p.containment_backend == "cuda"
           || (particle_p.containment_backend == "auto"
               && particle_p.covered_nodes == "inside"
+              && particle_p.shape != ParticleParameters::Shape::cylinder
               && cuda::ContainmentEngine::cuda_device_available()))
         interface.use_containment_engine(cuda::Backend::cuda);
+      // the ball around the centre that holds the body: a 3D cylinder's
+      // reaches its rims; a 2D disk's nodes lie in its mid-plane
+      const double body_ball_radius
+        = particle_p.shape == ParticleParameters::Shape::cylinder ?
+            std::hypot(particle_p.radius, 0.5 * particle_p.length) :
+            particle_p.radius;
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
       for (const auto id : ids)
-        interface_bodies.push_back({&world.body(id), particle_p.radius});
+        interface_bodies.push_back({&world.body(id), body_ball_radius});
 
       pcout << "Mesh: " << tria.n_global_active_cells() << " cells, "
             << flow.n_dofs() << " DoFs (" << flow.n_velocity_dofs()

@@ -25,7 +25,8 @@ namespace particulate {
       enum class Shape
       {
         sphere,
-        disk
+        disk,
+        cylinder ///< 3D: a circular cylinder along z of length 'Length'
       };
       /** How the particles move. */
       enum class Motion
@@ -35,9 +36,11 @@ namespace particulate {
         prescribed ///< translated by a given displacement d(t)
       };
 
-      Shape  shape   = Shape::sphere;
-      double radius  = 0.0075; ///< [m]
-      double density = 1120.;  ///< particle density rho_p [kg/m^3]
+      Shape  shape  = Shape::sphere;
+      double radius = 0.0075; ///< [m]
+      /// Shape::cylinder: length along z [m]
+      double length  = 0.;
+      double density = 1120.; ///< particle density rho_p [kg/m^3]
       Motion motion  = Motion::free;
       /// Motion::prescribed: displacement from the initial position [m],
       /// dim components of t
