@@ -15,8 +15,6 @@
 #include <particulate/fbm/particulate_flow_simulation.h>
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "../fluid/test_utilities.h"
@@ -50,45 +48,12 @@ namespace {
     std::vector<std::vector<double>> particle_series;
   };
 
-  /** The last data row of a .dat time series, as numbers. */
-  std::vector<double>
-  last_row(const std::string &path)
-  {
-    std::ifstream series(path);
-    std::string   line, last;
-    while (std::getline(series, line))
-      if (!line.empty() && line[0] != '#')
-        last = line;
-    std::istringstream  row(last);
-    std::vector<double> values;
-    for (double v; row >> v;)
-      values.push_back(v);
-    return values;
-  }
-
   std::string
   scientific(const double x)
   {
     char text[32];
     std::snprintf(text, sizeof(text), "%.2e", x);
     return text;
-  }
-
-  /** Every data row of a .dat time series. */
-  std::vector<std::vector<double>>
-  rows(const std::string &path)
-  {
-    std::ifstream                    series(path);
-    std::vector<std::vector<double>> table;
-    for (std::string line; std::getline(series, line);)
-      if (!line.empty() && line[0] != '#')
-        {
-          std::istringstream row(line);
-          table.emplace_back();
-          for (double v; row >> v;)
-            table.back().push_back(v);
-        }
-    return table;
   }
 
   template <int dim>
@@ -108,9 +73,11 @@ namespace {
     outcome.summary = simulation.run();
     // flow.dat: t, fluid kinetic energy, ...; particle_0.dat ends with the
     // number of covered velocity nodes
-    outcome.fluid_energy    = last_row(output + "/flow.dat").at(1);
-    outcome.covered_nodes   = last_row(output + "/particle_0.dat").back();
-    outcome.particle_series = rows(output + "/particle_0.dat");
+    outcome.fluid_energy
+      = testing::read_time_series(output + "/flow.dat").back().at(1);
+    outcome.particle_series
+      = testing::read_time_series(output + "/particle_0.dat");
+    outcome.covered_nodes = outcome.particle_series.back().back();
     return outcome;
   }
 } // namespace
