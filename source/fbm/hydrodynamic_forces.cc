@@ -101,7 +101,7 @@ namespace particulate {
                               fe,
                               quadrature,
                               update_values | update_gradients
-                                | update_quadrature_points | update_JxW_values);
+                                | update_JxW_values);
       const unsigned int          n_q = quadrature.size();
       std::vector<Tensor<2, dim>> sigma(n_q);
 
