@@ -123,6 +123,10 @@ main(int argc, char **argv)
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
   std::vector<std::string> args(argv + 1, argv + argc);
+  // While the case is read and checked every rank does the same work on the
+  // same file and fails alike: one message (from rank 0) and a plain exit
+  // then, instead of one copy per rank and MPI_Abort's banner.
+  bool reading_input = true;
   try
     {
       dealii::ParameterHandler prm;
@@ -178,6 +182,7 @@ main(int argc, char **argv)
         check_case<2>(parameters, filename, comm);
       else
         check_case<3>(parameters, filename, comm);
+      reading_input = false;
       if (validate_only)
         {
           if (root)
@@ -206,6 +211,12 @@ main(int argc, char **argv)
     }
   catch (const std::exception &e)
     {
+      if (reading_input)
+        {
+          if (root)
+            std::cerr << "\nparticulate: error: " << e.what() << std::endl;
+          return 1;
+        }
       std::cerr << "\nparticulate: error: " << e.what() << std::endl;
       // a rank that fails alone must not leave the others waiting
       if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
