@@ -9,13 +9,11 @@
 //
 // Usage: mpirun -np 2 bench_mesh_transfer r...
 
-#include <particulate/core/input_file.h>
 #include <particulate/core/mesh.h>
 #include <particulate/fluid/flow_simulation.h>
 #include <particulate/fluid/navier_stokes.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -23,8 +21,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
+
+#include "../../fluid/test_utilities.h"
 
 using namespace dealii;
 using namespace particulate;
@@ -39,19 +38,12 @@ main(int argc, char **argv)
                 "us per node per core |\n|---|---|---|---|---|\n");
   for (int a = 1; a < argc; ++a)
     {
-      const std::string file = "bench_mesh_transfer.prm";
-      if (root)
-        std::ofstream(file)
-          << "subsection Mesh\n set Type = hyper rectangle\n"
-          << " set Lower corner = 0, 0, 0\n set Upper corner = 1, 1, 2\n"
-          << " set Subdivisions = 4, 4, 8\n set Refinements = " << argv[a]
-          << "\nend\n";
-      MPI_Barrier(MPI_COMM_WORLD);
-      ParameterHandler prm;
-      fluid::FlowCaseParameters::declare(prm);
-      core::parse_input_file(prm, file);
-      fluid::FlowCaseParameters parameters;
-      parameters.parse(prm);
+      const auto parameters = testing::parameters_from_text(
+        std::string("subsection Mesh\n set Type = hyper rectangle\n"
+                    " set Lower corner = 0, 0, 0\n set Upper corner = 1, 1, 2\n"
+                    " set Subdivisions = 4, 4, 8\n set Refinements = ")
+          + argv[a] + "\nend\n",
+        "bench_mesh_transfer");
 
       parallel::fullydistributed::Triangulation<3> tria(MPI_COMM_WORLD);
       core::create_mesh(parameters.mesh, tria);
