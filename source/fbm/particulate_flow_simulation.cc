@@ -321,12 +321,11 @@ namespace particulate {
               && particle_p.shape != ParticleParameters::Shape::cylinder
               && cuda::ContainmentEngine::cuda_device_available()))
         interface.use_containment_engine(cuda::Backend::cuda);
-      // the ball around the centre that holds the body: a 3D cylinder's
-      // reaches its rims; a 2D disk's nodes lie in its mid-plane
+      // the ball around the centre that holds the body (the engine's shape
+      // knows it; a 3D cylinder's reaches its rims); a 2D disk's nodes lie
+      // in its mid-plane, where its radius is enough
       const double body_ball_radius
-        = particle_p.shape == ParticleParameters::Shape::cylinder ?
-            std::hypot(particle_p.radius, 0.5 * particle_p.length) :
-            particle_p.radius;
+        = dim == 3 ? shape->bounding_radius() : particle_p.radius;
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
       for (const auto id : ids)
         interface_bodies.push_back({&world.body(id), body_ball_radius});
