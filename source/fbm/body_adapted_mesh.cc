@@ -4,6 +4,9 @@
 #include <particulate/geometry/cylinder.h>
 #include <particulate/geometry/sphere.h>
 
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
 #include <limits>
 
 namespace particulate {
@@ -23,8 +26,36 @@ namespace particulate {
         shape = std::make_unique<geometry::Cylinder>(particles.radius,
                                                      1e3 * particles.radius);
       else if (particles.shape == ParticleParameters::Shape::cylinder)
-        shape = std::make_unique<geometry::Cylinder>(particles.radius,
-                                                     0.5 * particles.length);
+        {
+          // A cylinder at least as long as the domain along its axis (z)
+          // reaches through it, as in the 3D oscillating-cylinder slab: its
+          // caps lie on the end walls or outside, and the mesh must see only
+          // its lateral surface. With the caps in the distance field, a
+          // vertex of an end wall inside the disk lies on the body's surface
+          // (a cap) already and is never projected onto the lateral one: in
+          // a short piece of the slab 12 vertices of each end wall came to
+          // lie on the lateral surface against 18 of the middle layer, 16 on
+          // every layer without the caps
+          // (tests/fbm/cylinder_adapted_mesh.cc).
+          double z_low  = std::numeric_limits<double>::max();
+          double z_high = std::numeric_limits<double>::lowest();
+          for (const auto &cell : tria.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  z_low  = std::min(z_low, cell->vertex(v)[dim - 1]);
+                  z_high = std::max(z_high, cell->vertex(v)[dim - 1]);
+                }
+          const MPI_Comm communicator = tria.get_communicator();
+          const double   span
+            = dealii::Utilities::MPI::max(z_high, communicator)
+              - dealii::Utilities::MPI::min(z_low, communicator);
+          const bool reaches_through = particles.length >= span * (1. - 1e-9);
+          shape                      = std::make_unique<geometry::Cylinder>(
+            particles.radius,
+            reaches_through ? 1e3 * (span + particles.radius) :
+                                                   0.5 * particles.length);
+        }
       else
         shape = std::make_unique<geometry::Sphere>(particles.radius);
     }
