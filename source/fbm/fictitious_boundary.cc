@@ -222,8 +222,15 @@ namespace particulate {
               box.lower[2] = -r;
               box.upper[2] = r;
             }
+          // A node on the surface belongs to the body, whichever side
+          // rounding puts it: a mesh adapted to the body carries vertices
+          // (and, in 3D, the midpoints of edges along a cylinder's axis)
+          // exactly on its surface, and `inside` left each to the sign of
+          // a rounding error.
+          const double on_surface = 1e-10;
           grid->for_each_in_box(box, [&](const std::size_t i) {
-            const double tolerance = fraction * half_spacing[i];
+            const double tolerance
+              = std::max(fraction, on_surface) * half_spacing[i];
             if (node_body[i] < 0
                 && body.signed_distance(positions[i]) <= tolerance)
               node_body[i] = b;
