@@ -269,7 +269,8 @@ namespace particulate {
         "inside",
         Patterns::Selection("inside|halfway|nearest"),
         "Which velocity nodes take a particle's rigid velocity. inside: the "
-        "nodes inside it (signed distance <= 0, thesis eq. 5.9); the flow "
+        "nodes inside it or on its surface (signed distance <= 0, thesis eq. "
+        "5.9, up to 1e-10 of the node spacing against rounding); the flow "
         "sees a body shrunk to its innermost nodes. nearest: also the nodes "
         "outside by less than half the local node spacing (a quarter of the "
         "shortest edge of the cells around the node); the flow sees a body "
