@@ -41,11 +41,7 @@ namespace particulate {
     {
       if (engine && m != Marking::inside)
         throw std::invalid_argument(engine_marks_inside_only);
-      const bool needs_spacing
-        = m != Marking::inside && marking == Marking::inside;
       marking = m;
-      if (needs_spacing && !positions.empty())
-        make_half_spacing_consistent();
     }
 
 
@@ -138,8 +134,8 @@ namespace particulate {
                   nodes_of_cells.push_back(it->second);
               }
           }
-      if (marking != Marking::inside)
-        make_half_spacing_consistent();
+      // every marking needs it: `inside` for its rounding tolerance
+      make_half_spacing_consistent();
       grid = std::make_unique<geometry::PointHashGrid>(positions);
       node_body.assign(positions.size(), -1);
       positions_float.resize(3 * positions.size());

@@ -156,9 +156,10 @@ namespace particulate {
       std::unique_ptr<geometry::PointHashGrid> grid;
       std::vector<int>                         node_body;
       Marking                                  marking = Marking::inside;
-      /// Marking::halfway and nearest: per node half the local node spacing
-      /// (a quarter of the shortest cell edge around it, the same on every
-      /// rank), and its maximum
+      /// per node half the local node spacing (a quarter of the shortest
+      /// cell edge around it, the same on every rank), and its maximum: the
+      /// reach of Marking::halfway and nearest, and the scale of every
+      /// marking's rounding tolerance at the surface
       std::vector<double> half_spacing;
       double              largest_half_spacing = 0.;
       /// the engine path: its engine, the node positions as floats, one
