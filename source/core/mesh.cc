@@ -439,6 +439,31 @@ namespace particulate {
       return Utilities::MPI::compute_set_union(mine, tria.get_communicator());
     }
 
+    template <int dim>
+    std::pair<Point<dim>, Point<dim>>
+    global_bounding_box(const Triangulation<dim> &tria, MPI_Comm comm)
+    {
+      std::vector<double> lower(dim, std::numeric_limits<double>::max()),
+        upper(dim, std::numeric_limits<double>::lowest());
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::min(lower[d], cell->vertex(v)[d]);
+                upper[d] = std::max(upper[d], cell->vertex(v)[d]);
+              }
+      Utilities::MPI::min(lower, comm, lower);
+      Utilities::MPI::max(upper, comm, upper);
+      std::pair<Point<dim>, Point<dim>> box;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          box.first[d]  = lower[d];
+          box.second[d] = upper[d];
+        }
+      return box;
+    }
+
     template void
     create_serial_mesh<2>(const MeshParameters &, Triangulation<2> &);
     template void
@@ -455,5 +480,9 @@ namespace particulate {
     template std::vector<unsigned int>
     global_boundary_ids<3>(
       const parallel::fullydistributed::Triangulation<3> &);
+    template std::pair<Point<2>, Point<2>>
+    global_bounding_box<2>(const Triangulation<2> &, MPI_Comm);
+    template std::pair<Point<3>, Point<3>>
+    global_bounding_box<3>(const Triangulation<3> &, MPI_Comm);
   } // namespace core
 } // namespace particulate

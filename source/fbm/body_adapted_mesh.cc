@@ -1,12 +1,10 @@
 #include <particulate/core/checkpoint.h>
+#include <particulate/core/mesh.h>
 #include <particulate/deformation/distance_field.h>
 #include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/geometry/cylinder.h>
 #include <particulate/geometry/sphere.h>
 
-#include <deal.II/base/mpi.h>
-
-#include <algorithm>
 #include <limits>
 
 namespace particulate {
@@ -37,24 +35,14 @@ namespace particulate {
           // lie on the lateral surface against 18 of the middle layer, 16 on
           // every layer without the caps
           // (tests/fbm/cylinder_adapted_mesh.cc).
-          double z_low  = std::numeric_limits<double>::max();
-          double z_high = std::numeric_limits<double>::lowest();
-          for (const auto &cell : tria.active_cell_iterators())
-            if (cell->is_locally_owned())
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  z_low  = std::min(z_low, cell->vertex(v)[dim - 1]);
-                  z_high = std::max(z_high, cell->vertex(v)[dim - 1]);
-                }
-          const MPI_Comm communicator = tria.get_communicator();
-          const double   span
-            = dealii::Utilities::MPI::max(z_high, communicator)
-              - dealii::Utilities::MPI::min(z_low, communicator);
-          const bool reaches_through = particles.length >= span * (1. - 1e-9);
-          shape                      = std::make_unique<geometry::Cylinder>(
+          const auto [lower, upper]
+            = core::global_bounding_box(tria, tria.get_communicator());
+          const double span            = upper[dim - 1] - lower[dim - 1];
+          const bool   reaches_through = particles.length >= span * (1. - 1e-9);
+          shape                        = std::make_unique<geometry::Cylinder>(
             particles.radius,
             reaches_through ? 1e3 * (span + particles.radius) :
-                                                   0.5 * particles.length);
+                                                     0.5 * particles.length);
         }
       else
         shape = std::make_unique<geometry::Sphere>(particles.radius);

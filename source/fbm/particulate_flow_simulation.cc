@@ -33,33 +33,6 @@ namespace particulate {
     using namespace dealii;
 
     namespace {
-      /** Lower and upper corner of the whole mesh (all ranks). */
-      template <int dim>
-      std::pair<Eigen::Vector3d, Eigen::Vector3d>
-      mesh_box(const Triangulation<dim> &tria, MPI_Comm comm)
-      {
-        std::vector<double> lower(3, std::numeric_limits<double>::max()),
-          upper(3, -std::numeric_limits<double>::max());
-        for (const auto &cell : tria.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto v : cell->vertex_indices())
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  lower[d] = std::min(lower[d], cell->vertex(v)[d]);
-                  upper[d] = std::max(upper[d], cell->vertex(v)[d]);
-                }
-        Utilities::MPI::min(lower, comm, lower);
-        Utilities::MPI::max(upper, comm, upper);
-        Eigen::Vector3d lo = Eigen::Vector3d::Zero(),
-                        up = Eigen::Vector3d::Zero();
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            lo[d] = lower[d];
-            up[d] = upper[d];
-          }
-        return {lo, up};
-      }
-
       /** Shortest cell edge of the whole mesh (all ranks). */
       template <int dim>
       double
@@ -153,7 +126,8 @@ namespace particulate {
       }
       flow_p.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
                                              parameter_file);
-      const auto [box_lower, box_upper] = mesh_box(tria, communicator);
+      const auto [box_lower, box_upper]
+        = core::global_bounding_box(tria, communicator);
       for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
           if (particle_p.positions[i][d] < box_lower[d]

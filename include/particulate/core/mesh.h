@@ -2,9 +2,11 @@
 #define particulate_core_mesh_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace particulate {
@@ -90,6 +92,12 @@ namespace particulate {
     std::vector<unsigned int>
     global_boundary_ids(
       const dealii::parallel::fullydistributed::Triangulation<dim> &tria);
+
+    /** Lower and upper corner of the whole mesh: the extremes of the
+     *  vertices of the locally owned cells, over all ranks of @p comm. */
+    template <int dim>
+    std::pair<dealii::Point<dim>, dealii::Point<dim>>
+    global_bounding_box(const dealii::Triangulation<dim> &tria, MPI_Comm comm);
   } // namespace core
 } // namespace particulate
 
