@@ -90,7 +90,10 @@ namespace particulate {
       unsigned int maximum_iterations = 1000;
       unsigned int krylov_size        = 100;
       /// "automatic", "Cahouet-Chabard" or "least-squares commutator"
-      std::string schur_approximation        = "automatic";
+      std::string schur_approximation = "automatic";
+      /// L_p^{-1} inside the Schur approximation: "CG" (CG + AMG to
+      /// 'Pressure Poisson tolerance') or "V-cycle" (one AMG V-cycle)
+      std::string pressure_poisson_solver    = "CG";
       double      pressure_poisson_tolerance = 1e-2;
       /// smoother of L_p's ML V-cycle: "ILU" (one ILU(0) sweep) or
       /// "Chebyshev" (ML's Jacobi-Chebyshev, two sweeps)
