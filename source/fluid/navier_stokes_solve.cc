@@ -455,7 +455,9 @@ namespace particulate {
       const PressurePoissonSolver laplace_inverse(
         pressure_laplacian,
         *laplace_amg,
-        parameters.linear_solver.pressure_poisson_tolerance,
+        parameters.linear_solver.pressure_poisson_tolerance > 0. ?
+          parameters.linear_solver.pressure_poisson_tolerance :
+          (least_squares_commutator ? 1e-2 : 0.3),
         parameters.linear_solver.pressure_poisson_solver == "V-cycle"
           && !least_squares_commutator);
       const unsigned int max_iterations

@@ -2,8 +2,9 @@
 // solver' and 'Pressure Poisson tolerance' in subsection 'Linear solver')
 // changes how fast FGMRES converges, not what it converges to: three
 // fractional-step-theta steps of DFG 2D-2 with tight outer tolerances give
-// the same drag, lift and pressure difference with CG to 1e-2 (the default),
-// CG to 0.3 and a single AMG V-cycle, to a relative 1e-8.
+// the same drag, lift and pressure difference with CG to 1e-2, CG to 0.3
+// (the default with Cahouet-Chabard) and a single AMG V-cycle, to a
+// relative 1e-8.
 
 #include <particulate/fluid/flow_simulation.h>
 

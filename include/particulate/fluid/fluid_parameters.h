@@ -93,8 +93,9 @@ namespace particulate {
       std::string schur_approximation = "automatic";
       /// L_p^{-1} inside the Schur approximation: "CG" (CG + AMG to
       /// 'Pressure Poisson tolerance') or "V-cycle" (one AMG V-cycle)
-      std::string pressure_poisson_solver    = "CG";
-      double      pressure_poisson_tolerance = 1e-2;
+      std::string pressure_poisson_solver = "CG";
+      /// 0: automatic (0.3 with Cahouet-Chabard, 1e-2 with LSC)
+      double pressure_poisson_tolerance = 0.;
       /// smoother of L_p's ML V-cycle: "ILU" (one ILU(0) sweep) or
       /// "Chebyshev" (ML's Jacobi-Chebyshev, two sweeps)
       std::string pressure_laplacian_smoother = "ILU";
