@@ -7,6 +7,7 @@
 
 #include <deal.II/grid/cell_id.h>
 
+#include <algorithm>
 #include <istream>
 #include <ostream>
 #include <stdexcept>
@@ -60,9 +61,29 @@ namespace particulate {
           DeformationReport report;
           if (following == DeformationParameters::Following::carry_surface)
             {
+              const auto &alpha
+                = static_cast<const LaplaceAlpha<dim> &>(*method);
               std::vector<bool> placed;
-              report = static_cast<const LaplaceAlpha<dim> &>(*method)
-                         .deform(mesh, distance, placed);
+              report = alpha.deform(mesh, distance, placed);
+              // The fresh mesh in the form carry() gives it: carry() pins
+              // every surface vertex from the start of each level, while
+              // deform() placed some only after that level's smoothing (a
+              // second try after a first one was held back). Left as it
+              // is, the first carried step would move the vertices around
+              // those by up to a cell for the difference alone, a one-step
+              // spike of the mesh velocity and with it of the pressure and
+              // the force (the 3D slab: drag -70 % for one step after each
+              // fresh adaptation). Carried by zero, the mesh changes only
+              // as the bodies move from here on.
+              const auto settled = alpha.carry(
+                mesh,
+                undeformed,
+                distance,
+                [](const Point<dim> &) { return Tensor<1, dim>(); },
+                placed);
+              report.projected_vertices = settled.projected_vertices;
+              report.held_back_vertices += settled.held_back_vertices;
+              report.quality = settled.quality;
               on_surface.swap(placed);
             }
           else
@@ -96,16 +117,23 @@ namespace particulate {
       const std::function<Tensor<1, dim>(const Point<dim> &)>
         &body_displacement)
     {
+      const std::vector<Point<dim>> before = mesh.get_vertices();
+      const auto                    moved  = [&](DeformationReport report) {
+        for (unsigned int v = 0; v < before.size(); ++v)
+          report.max_vertex_move
+            = std::max(report.max_vertex_move,
+                       before[v].distance(mesh.get_vertices()[v]));
+        return report;
+      };
       if (following == DeformationParameters::Following::readapt
           || on_surface.empty())
         {
           auto report      = adapt(distance);
           report.readapted = true;
-          return report;
+          return moved(report);
         }
-      const std::vector<Point<dim>> before  = mesh.get_vertices();
-      std::vector<bool>             carried = on_surface;
-      const DeformationReport       report
+      std::vector<bool>       carried = on_surface;
+      const DeformationReport report
         = following == DeformationParameters::Following::carry_surface ?
             static_cast<const LaplaceAlpha<dim> &>(*method)
               .carry(mesh, undeformed, distance, body_displacement, carried) :
@@ -116,12 +144,12 @@ namespace particulate {
                >= std::min(readaptation_quality, fresh_min_quality)
           && report.quality.max_aspect_ratio
                <= std::max(readaptation_aspect_ratio, fresh_max_aspect_ratio))
-        return report;
+        return moved(report);
       // the carried mesh has run out of room: start afresh
       VertexHierarchy<dim>::write_positions(mesh, before);
       auto fresh      = adapt(distance);
       fresh.readapted = true;
-      return fresh;
+      return moved(fresh);
     }
 
 

@@ -464,7 +464,8 @@ namespace particulate {
                                    "held_back_vertices",
                                    "projected_vertices",
                                    "adaptation_steps",
-                                   "readapted"},
+                                   "readapted",
+                                   "max_vertex_move"},
           communicator,
           parameters.restart);
       const auto record_mesh
@@ -477,7 +478,8 @@ namespace particulate {
                                       double(r.held_back_vertices),
                                       double(r.projected_vertices),
                                       double(r.steps),
-                                      double(r.readapted)});
+                                      double(r.readapted),
+                                      r.max_vertex_move});
           };
       core::TimeSeriesWriter flow_series(series_file("flow"),
                                          {"time",

@@ -64,7 +64,8 @@ namespace {
     return rows == 6 ? worst : -1.; // t = 0 and 5 steps
   }
 
-  /** Fresh adaptations after the start (last column of a mesh.dat). */
+  /** Fresh adaptations after the start ('readapted', the eighth column of
+   *  a mesh.dat). */
   unsigned int
   fresh_adaptations(const std::string &file)
   {
@@ -80,7 +81,11 @@ namespace {
               first = false;
               continue;
             }
-          count += line.back() == '1';
+          std::istringstream  row(line);
+          std::vector<double> columns;
+          for (double x; row >> x;)
+            columns.push_back(x);
+          count += columns.size() > 7 && columns[7] == 1.;
         }
     return count;
   }

@@ -26,6 +26,8 @@ namespace particulate {
       /// MovingMesh::follow(): the mesh was adapted afresh from the
       /// undeformed one (always, unless surface vertices are carried)
       bool readapted = false;
+      /// MovingMesh::follow(): the largest distance a vertex moved [m]
+      double max_vertex_move = 0.;
       /// quality of the active cells afterwards
       MeshQuality quality;
     };
