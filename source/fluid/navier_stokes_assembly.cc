@@ -1,3 +1,4 @@
+#include <particulate/fluid/cell_block_insertion.h>
 #include <particulate/fluid/navier_stokes.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -129,6 +130,50 @@ namespace particulate {
       const bool has_body_force
         = dynamic_cast<const Functions::ZeroFunction<dim> *>(body_force.get())
           == nullptr;
+
+      // The blocks go straight into the matrix (CellBlockInsertion) unless
+      // a constraint couples DoFs (hanging nodes, a slip plane that is not
+      // a coordinate plane) or holds a pressure: those need
+      // AffineConstraints.
+      const types::global_dof_index n_velocity_dofs = dofs_per_block[0];
+      const bool                    direct_insertion
+        = assemble_matrix
+          && CellBlockInsertion::applicable(system_matrix,
+                                            zero_constraints,
+                                            n_velocity_dofs);
+      CellBlockInsertion insertion;
+      // velocity i = dim * a + c is phi_a e_c
+      std::vector<types::global_dof_index> velocity_dofs(dim * n_s),
+        pressure_dofs(n_p);
+      const auto is_decoupled = [&](const types::global_dof_index dof) {
+        return std::binary_search(decoupled_pressure_dofs.begin(),
+                                  decoupled_pressure_dofs.end(),
+                                  dof);
+      };
+      const auto insert_directly = [&]() {
+        for (unsigned int a = 0; a < n_s; ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            velocity_dofs[dim * a + c] = dof_indices[velocity_index[a][c]];
+        for (unsigned int k = 0; k < n_p; ++k)
+          {
+            const types::global_dof_index dof = dof_indices[pressure_index[k]];
+            pressure_dofs[k]
+              = is_decoupled(dof) ? numbers::invalid_dof_index : dof;
+          }
+        insertion.add_saddle_point_cell(
+          system_matrix,
+          zero_constraints,
+          velocity_dofs,
+          pressure_dofs,
+          n_velocity_dofs,
+          [&](const unsigned int i, const unsigned int j) {
+            return uu(i % dim, j % dim, i / dim, j / dim);
+          },
+          [&](const unsigned int k, const unsigned int j) {
+            return block_pu[(k * dim + j % dim) * n_s + j / dim];
+          },
+          dofs_per_cell);
+      };
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -284,7 +329,10 @@ namespace particulate {
                         -= psi[k] * grad_phi[b][d] * JxW;
               }
 
-            if (assemble_matrix)
+            cell->get_dof_indices(dof_indices);
+            if (direct_insertion)
+              insert_directly();
+            else if (assemble_matrix)
               {
                 cell_matrix = 0;
                 for (unsigned int c = 0; c < dim; ++c)
@@ -306,24 +354,21 @@ namespace particulate {
                       }
               }
 
-            cell->get_dof_indices(dof_indices);
             // undetermined pressure modes (see decoupled_pressure_dofs)
             // leave the equations: no row, no column
             for (unsigned int k = 0; k < n_p; ++k)
-              if (std::binary_search(decoupled_pressure_dofs.begin(),
-                                     decoupled_pressure_dofs.end(),
-                                     dof_indices[pressure_index[k]]))
+              if (is_decoupled(dof_indices[pressure_index[k]]))
                 {
                   const unsigned int row = pressure_index[k];
                   cell_rhs(row)          = 0.;
-                  if (assemble_matrix)
+                  if (assemble_matrix && !direct_insertion)
                     for (unsigned int i = 0; i < cell_matrix.m(); ++i)
                       {
                         cell_matrix(row, i) = 0.;
                         cell_matrix(i, row) = 0.;
                       }
                 }
-            if (assemble_matrix)
+            if (assemble_matrix && !direct_insertion)
               zero_constraints.distribute_local_to_global(cell_matrix,
                                                           cell_rhs,
                                                           dof_indices,

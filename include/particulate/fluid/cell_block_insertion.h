@@ -1,0 +1,229 @@
+#ifndef PARTICULATE_FLUID_CELL_BLOCK_INSERTION_H
+#define PARTICULATE_FLUID_CELL_BLOCK_INSERTION_H
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <Epetra_CrsMatrix.h>
+
+namespace particulate {
+  namespace fluid {
+    /**
+     * Adds one cell's part of a local matrix into one block of a distributed
+     * Trilinos matrix whose sparsity pattern already holds every coupling of
+     * the cell.
+     *
+     * Why not SparseMatrix::add (what AffineConstraints'
+     * distribute_local_to_global calls row by row): Epetra translates every
+     * column of every row from its global index through a hash table and
+     * then finds it in the row by binary search; for the 81 x 81 velocity
+     * block of a Q2 hexahedron that was as costly as computing the entries
+     * (doc/performance.md, "Inserting the Jacobian"). Here each column is
+     * translated once per cell and sorted, and every locally owned row of
+     * the cell is merged with the matrix's sorted row in one pass, adding
+     * through Epetra's row view.
+     *
+     * Rows and columns to leave out (constrained velocities, decoupled
+     * pressures) are given as numbers::invalid_dof_index. Rows another rank
+     * owns go through SparseMatrix::add, which keeps them for compress().
+     * The matrix must be filled with sorted local column indices
+     * (applicable()); constraints other than plain Dirichlet rows are the
+     * caller's to leave to AffineConstraints.
+     */
+    class CellBlockInsertion
+    {
+    public:
+      /** Whether @p matrix takes direct additions: it has its final
+       *  structure with local column indices (FillComplete() also sorts
+       *  every row's; a row found unsorted stops add() with an error). */
+      static bool
+      applicable(const dealii::TrilinosWrappers::SparseMatrix &matrix)
+      {
+        const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+        return A.Filled() && A.IndicesAreLocal();
+      }
+
+      /** matrix(rows[i], columns[j]) += value(i, j) for every row and
+       *  column not left out (indices within the block). */
+      template <typename ValueOf>
+      void
+      add(dealii::TrilinosWrappers::SparseMatrix             &matrix,
+          const std::vector<dealii::types::global_dof_index> &rows,
+          const std::vector<dealii::types::global_dof_index> &columns,
+          const ValueOf                                      &value)
+      {
+        using dealii::numbers::invalid_dof_index;
+        const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+        sorted_columns.clear();
+        bool all_columns_local = true;
+        for (unsigned int j = 0; j < columns.size(); ++j)
+          if (columns[j] != invalid_dof_index)
+            {
+              const int local = A.ColMap().LID(global_id(columns[j]));
+              all_columns_local &= local >= 0;
+              sorted_columns.emplace_back(local, j);
+            }
+        std::sort(sorted_columns.begin(), sorted_columns.end());
+
+        for (unsigned int i = 0; i < rows.size(); ++i)
+          {
+            if (rows[i] == invalid_dof_index)
+              continue;
+            const int local_row = A.RowMap().LID(global_id(rows[i]));
+            if (local_row < 0 || !all_columns_local)
+              {
+                add_through_global_indices(matrix, rows[i], i, columns, value);
+                continue;
+              }
+            int     n_entries = 0;
+            double *entries   = nullptr;
+            int    *indices   = nullptr;
+            A.ExtractMyRowView(local_row, n_entries, entries, indices);
+            int k = 0;
+            for (const auto &[local_column, j] : sorted_columns)
+              {
+                while (k < n_entries && indices[k] < local_column)
+                  ++k;
+                AssertThrow(k < n_entries && indices[k] == local_column,
+                            dealii::ExcMessage(
+                              "A coupling of the cell is missing from the "
+                              "matrix's sparsity pattern."));
+                entries[k] += value(i, j);
+              }
+          }
+      }
+
+      /**
+       * Whether add_saddle_point_cell() gives what
+       * AffineConstraints::distribute_local_to_global would: the blocks
+       * (0,0), (0,1), (1,0) take direct additions, and every constraint is
+       * a plain Dirichlet row of a velocity (no DoF coupled to others, as
+       * at hanging nodes or on a slip plane that is not a coordinate
+       * plane, and no pressure constrained).
+       */
+      static bool
+      applicable(const dealii::TrilinosWrappers::BlockSparseMatrix &matrix,
+                 const dealii::AffineConstraints<double>           &constraints,
+                 const dealii::types::global_dof_index n_velocity_dofs)
+      {
+        if (!applicable(matrix.block(0, 0)) || !applicable(matrix.block(0, 1))
+            || !applicable(matrix.block(1, 0)))
+          return false;
+        for (const auto &line : constraints.get_lines())
+          if (!line.entries.empty() || line.index >= n_velocity_dofs)
+            return false;
+        return true;
+      }
+
+      /**
+       * One cell of a saddle-point matrix [A B^T; B 0] whose velocity DoFs
+       * are numbered before the pressure DoFs: A(i, j) = a(i, j) for the
+       * cell's velocity DoFs @p velocity_dofs, B(k, j) = b(k, j) for its
+       * pressure DoFs @p pressure_dofs (system numbering;
+       * invalid_dof_index for a pressure that is to have no row and no
+       * column). Constrained velocities get no row and no column, and the
+       * diagonal entry distribute_local_to_global gives them: |a(i, i)|, or
+       * where that is zero the average |diagonal| of the local matrix of
+       * @p n_cell_dofs DoFs (1 if that is zero too).
+       */
+      template <typename AValue, typename BValue>
+      void
+      add_saddle_point_cell(
+        dealii::TrilinosWrappers::BlockSparseMatrix        &matrix,
+        const dealii::AffineConstraints<double>            &constraints,
+        const std::vector<dealii::types::global_dof_index> &velocity_dofs,
+        const std::vector<dealii::types::global_dof_index> &pressure_dofs,
+        const dealii::types::global_dof_index               n_velocity_dofs,
+        const AValue                                       &a,
+        const BValue                                       &b,
+        const unsigned int                                  n_cell_dofs)
+      {
+        using dealii::numbers::invalid_dof_index;
+        velocity_kept.resize(velocity_dofs.size());
+        for (unsigned int i = 0; i < velocity_dofs.size(); ++i)
+          velocity_kept[i] = constraints.is_constrained(velocity_dofs[i]) ?
+                               invalid_dof_index :
+                               velocity_dofs[i];
+        pressure_kept.resize(pressure_dofs.size());
+        for (unsigned int k = 0; k < pressure_dofs.size(); ++k)
+          pressure_kept[k] = pressure_dofs[k] == invalid_dof_index ?
+                               invalid_dof_index :
+                               pressure_dofs[k] - n_velocity_dofs;
+        add(matrix.block(0, 0), velocity_kept, velocity_kept, a);
+        add(matrix.block(0, 1),
+            velocity_kept,
+            pressure_kept,
+            [&](const unsigned int i, const unsigned int k) {
+              return b(k, i);
+            });
+        add(matrix.block(1, 0), pressure_kept, velocity_kept, b);
+
+        double average_diagonal = 0.;
+        for (unsigned int i = 0; i < velocity_dofs.size(); ++i)
+          average_diagonal += std::abs(a(i, i));
+        average_diagonal /= n_cell_dofs;
+        if (average_diagonal == 0.)
+          average_diagonal = 1.;
+        for (unsigned int i = 0; i < velocity_dofs.size(); ++i)
+          if (velocity_kept[i] == invalid_dof_index)
+            {
+              const double diagonal = std::abs(a(i, i));
+              matrix.block(0, 0).add(velocity_dofs[i],
+                                     velocity_dofs[i],
+                                     diagonal != 0. ? diagonal :
+                                                      average_diagonal);
+            }
+      }
+
+    private:
+      static dealii::TrilinosWrappers::types::int_type
+      global_id(const dealii::types::global_dof_index index)
+      {
+        return static_cast<dealii::TrilinosWrappers::types::int_type>(index);
+      }
+
+      /** One row by global indices (a row another rank owns). */
+      template <typename ValueOf>
+      void
+      add_through_global_indices(
+        dealii::TrilinosWrappers::SparseMatrix             &matrix,
+        const dealii::types::global_dof_index               row,
+        const unsigned int                                  i,
+        const std::vector<dealii::types::global_dof_index> &columns,
+        const ValueOf                                      &value)
+      {
+        row_columns.clear();
+        row_values.clear();
+        for (unsigned int j = 0; j < columns.size(); ++j)
+          if (columns[j] != dealii::numbers::invalid_dof_index)
+            {
+              row_columns.push_back(columns[j]);
+              row_values.push_back(value(i, j));
+            }
+        matrix.add(row,
+                   row_columns.size(),
+                   row_columns.data(),
+                   row_values.data(),
+                   false);
+      }
+
+      /// (local column index, position in the cell's column list)
+      std::vector<std::pair<int, unsigned int>>    sorted_columns;
+      std::vector<dealii::types::global_dof_index> row_columns;
+      std::vector<double>                          row_values;
+      /// the cell's indices within the blocks, invalid where left out
+      std::vector<dealii::types::global_dof_index> velocity_kept;
+      std::vector<dealii::types::global_dof_index> pressure_kept;
+    };
+  } // namespace fluid
+} // namespace particulate
+
+#endif

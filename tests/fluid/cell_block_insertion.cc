@@ -1,0 +1,247 @@
+// Direct insertion of a cell's saddle-point blocks (include/particulate/
+// fluid/cell_block_insertion.h, what the Jacobian assembly uses) against
+// the reference, AffineConstraints::distribute_local_to_global into the
+// same Trilinos block matrix. Q2^dim x P1disc on a distorted, fully
+// distributed box, 2D and 3D, on the ranks the test is started with;
+// random cell matrices; velocities constrained on the walls and inside a
+// ball (as the fictitious boundary constrains them), some diagonal entries
+// zero (the average-diagonal rule), some pressures decoupled (no row, no
+// column). Checks:
+// - the direct path applies to plain Dirichlet constraints and is refused
+//   once a constraint couples DoFs (a hanging-node-like line);
+// - ||direct - reference||_F <= 1e-14 ||reference||_F in every block (the
+//   same additions in the same order: equal up to nothing but rounding).
+
+#include <particulate/fluid/cell_block_insertion.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgp.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <cstdio>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "test_utilities.h"
+
+using namespace dealii;
+using namespace particulate;
+
+namespace {
+  template <int dim>
+  void
+  check_insertion(testing::Checker &checker)
+  {
+    const MPI_Comm     comm = MPI_COMM_WORLD;
+    Triangulation<dim> serial;
+    GridGenerator::subdivided_hyper_cube(serial, dim == 2 ? 8 : 4, 0., 1.);
+    GridTools::distort_random(0.2, serial, false, 5);
+    GridTools::partition_triangulation(Utilities::MPI::n_mpi_processes(comm),
+                                       serial);
+    parallel::fullydistributed::Triangulation<dim> tria(comm);
+    tria.create_triangulation(
+      TriangulationDescription::Utilities::
+        create_description_from_triangulation(serial, comm));
+
+    const FESystem<dim> fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1);
+    DoFHandler<dim>     dof_handler(tria);
+    dof_handler.distribute_dofs(fe);
+    std::vector<unsigned int> blocks(dim + 1, 0);
+    blocks[dim] = 1;
+    DoFRenumbering::component_wise(dof_handler, blocks);
+    const auto dofs_per_block
+      = DoFTools::count_dofs_per_fe_block(dof_handler, blocks);
+    const types::global_dof_index n_u   = dofs_per_block[0];
+    const IndexSet               &owned = dof_handler.locally_owned_dofs();
+    IndexSet                      relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const std::vector<IndexSet> partitioning
+      = {owned.get_view(0, n_u), owned.get_view(n_u, owned.size())};
+    const std::vector<IndexSet> relevant_partitioning
+      = {relevant.get_view(0, n_u), relevant.get_view(n_u, relevant.size())};
+
+    // velocities fixed on the walls and inside a ball around a point off
+    // the mesh's symmetry
+    // (FE_DGP has no support points, so map_dofs_to_support_points()
+    // cannot take the whole element)
+    std::map<types::global_dof_index, Point<dim>> points;
+    {
+      const MappingQ1<dim> mapping;
+      const auto          &unit = fe.base_element(0).get_unit_support_points();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              {
+                const auto [component, index] = fe.system_to_component_index(i);
+                if (component < dim)
+                  points[dofs[i]]
+                    = mapping.transform_unit_to_real_cell(cell, unit[index]);
+              }
+          }
+    }
+    const IndexSet on_walls
+      = DoFTools::extract_boundary_dofs(dof_handler,
+                                        fe.component_mask(
+                                          FEValuesExtractors::Vector(0)));
+    Point<dim> centre;
+    for (unsigned int d = 0; d < dim; ++d)
+      centre[d] = 0.45 + 0.03 * d;
+    AffineConstraints<double> constraints(relevant);
+    for (const auto dof : relevant)
+      if (dof < n_u
+          && (on_walls.is_element(dof)
+              || points.at(dof).distance(centre) < 0.2))
+        constraints.add_line(dof);
+    constraints.close();
+
+    Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
+    for (unsigned int c = 0; c < dim + 1; ++c)
+      for (unsigned int d = 0; d < dim + 1; ++d)
+        coupling[c][d]
+          = (c == dim && d == dim) ? DoFTools::none : DoFTools::always;
+    TrilinosWrappers::BlockSparsityPattern pattern(partitioning,
+                                                   partitioning,
+                                                   relevant_partitioning,
+                                                   comm);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    coupling,
+                                    pattern,
+                                    constraints,
+                                    true,
+                                    Utilities::MPI::this_mpi_process(comm));
+    pattern.compress();
+    TrilinosWrappers::BlockSparseMatrix reference, direct;
+    reference.reinit(pattern);
+    direct.reinit(pattern);
+
+    const bool applies
+      = fluid::CellBlockInsertion::applicable(direct, constraints, n_u);
+    checker.check(Utilities::MPI::min(int(applies), comm) == 1,
+                  std::to_string(dim)
+                    + "D: direct insertion applies to Dirichlet rows");
+    {
+      AffineConstraints<double>     coupled(relevant);
+      const types::global_dof_index first = *partitioning[0].begin();
+      coupled.add_line(first);
+      coupled.add_entry(first, first + 1, 0.5);
+      coupled.close();
+      checker.check(!fluid::CellBlockInsertion::applicable(direct,
+                                                           coupled,
+                                                           n_u),
+                    std::to_string(dim)
+                      + "D: and is refused for a constraint that couples DoFs");
+    }
+
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   local(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<unsigned int>            velocity_local, pressure_local;
+    for (unsigned int i = 0; i < n; ++i)
+      (fe.system_to_component_index(i).first < dim ? velocity_local :
+                                                     pressure_local)
+        .push_back(i);
+    std::vector<types::global_dof_index> velocity_dofs(velocity_local.size()),
+      pressure_dofs(pressure_local.size());
+    fluid::CellBlockInsertion insertion;
+    unsigned int              cell_count = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          // the same numbers on any partition
+          std::mt19937 random(std::hash<std::string>()(cell->id().to_string()));
+          std::uniform_real_distribution<double> entry(-1., 1.);
+          local = 0.;
+          for (const unsigned int i : velocity_local)
+            {
+              for (const unsigned int j : velocity_local)
+                local(i, j) = entry(random);
+              // every seventh diagonal entry zero
+              local(i, i) = (dofs[i] % 7 == 0) ? 0. : 4. + entry(random);
+              for (const unsigned int k : pressure_local)
+                local(i, k) = local(k, i) = entry(random);
+            }
+          // every fifth cell's pressures decoupled
+          const bool decoupled = ++cell_count % 5 == 0;
+          for (unsigned int k = 0; k < pressure_local.size(); ++k)
+            pressure_dofs[k] = decoupled ? numbers::invalid_dof_index :
+                                           dofs[pressure_local[k]];
+          for (unsigned int i = 0; i < velocity_local.size(); ++i)
+            velocity_dofs[i] = dofs[velocity_local[i]];
+
+          insertion.add_saddle_point_cell(
+            direct,
+            constraints,
+            velocity_dofs,
+            pressure_dofs,
+            n_u,
+            [&](const unsigned int i, const unsigned int j) {
+              return local(velocity_local[i], velocity_local[j]);
+            },
+            [&](const unsigned int k, const unsigned int j) {
+              return local(pressure_local[k], velocity_local[j]);
+            },
+            n);
+          if (decoupled)
+            for (const unsigned int k : pressure_local)
+              for (unsigned int i = 0; i < n; ++i)
+                local(k, i) = local(i, k) = 0.;
+          constraints.distribute_local_to_global(local, dofs, reference);
+        }
+    reference.compress(VectorOperation::add);
+    direct.compress(VectorOperation::add);
+
+    for (const auto &[r, c] :
+         {std::pair<unsigned int, unsigned int>{0, 0}, {0, 1}, {1, 0}})
+      {
+        TrilinosWrappers::SparseMatrix difference;
+        difference.copy_from(direct.block(r, c));
+        difference.add(-1., reference.block(r, c));
+        const double norm  = reference.block(r, c).frobenius_norm();
+        const double error = difference.frobenius_norm();
+        char         numbers[120];
+        std::snprintf(numbers,
+                      sizeof(numbers),
+                      " (||reference||_F = %.4g, ||difference||_F = %.2e)",
+                      norm,
+                      error);
+        checker.check(norm > 0. && error <= 1e-14 * norm,
+                      std::to_string(dim) + "D block (" + std::to_string(r)
+                        + "," + std::to_string(c)
+                        + "): direct insertion equals "
+                          "distribute_local_to_global"
+                        + numbers);
+      }
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  testing::Checker                 checker;
+  check_insertion<2>(checker);
+  check_insertion<3>(checker);
+  return checker.exit_code();
+}
