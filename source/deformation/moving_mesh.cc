@@ -67,14 +67,15 @@ namespace particulate {
               report = alpha.deform(mesh, distance, placed);
               // The fresh mesh in the form carry() gives it: carry() pins
               // every surface vertex from the start of each level, while
-              // deform() placed some only after that level's smoothing (a
-              // second try after a first one was held back). Left as it
-              // is, the first carried step would move the vertices around
-              // those by up to a cell for the difference alone, a one-step
-              // spike of the mesh velocity and with it of the pressure and
-              // the force (the 3D slab: drag -70 % for one step after each
-              // fresh adaptation). Carried by zero, the mesh changes only
-              // as the bodies move from here on.
+              // deform() placed some only after that level's smoothing
+              // (those the smoothing brought near the surface, and second
+              // tries after being held back). Left as it is, the first
+              // carried step would move the vertices around those for the
+              // difference alone, a one-step spike of the mesh velocity and
+              // with it of the pressure and the force (the 3D slab: drag
+              // -70 % for one step after each fresh adaptation). Carried by
+              // zero, the mesh changes only as the bodies move from here
+              // on.
               const auto settled = alpha.carry(
                 mesh,
                 undeformed,
