@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "distorted_box.h"
 #include "test_utilities.h"
 
 using namespace dealii;
@@ -48,28 +49,16 @@ namespace {
   void
   check_insertion(testing::Checker &checker)
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    Triangulation<dim> serial;
-    GridGenerator::subdivided_hyper_cube(serial, dim == 2 ? 8 : 4, 0., 1.);
-    GridTools::distort_random(0.2, serial, false, 5);
-    GridTools::partition_triangulation(Utilities::MPI::n_mpi_processes(comm),
-                                       serial);
+    const MPI_Comm                                 comm = MPI_COMM_WORLD;
     parallel::fullydistributed::Triangulation<dim> tria(comm);
-    tria.create_triangulation(
-      TriangulationDescription::Utilities::
-        create_description_from_triangulation(serial, comm));
+    testing::make_distorted_box(tria, dim == 2 ? 8 : 4, 5);
 
-    const FESystem<dim> fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1);
-    DoFHandler<dim>     dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    std::vector<unsigned int> blocks(dim + 1, 0);
-    blocks[dim] = 1;
-    DoFRenumbering::component_wise(dof_handler, blocks);
-    const auto dofs_per_block
-      = DoFTools::count_dofs_per_fe_block(dof_handler, blocks);
-    const types::global_dof_index n_u   = dofs_per_block[0];
-    const IndexSet               &owned = dof_handler.locally_owned_dofs();
-    IndexSet                      relevant;
+    const FESystem<dim>           fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1);
+    DoFHandler<dim>               dof_handler(tria);
+    const types::global_dof_index n_u
+      = testing::distribute_velocities_first(dof_handler, fe);
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    IndexSet        relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     const std::vector<IndexSet> partitioning
       = {owned.get_view(0, n_u), owned.get_view(n_u, owned.size())};
@@ -78,26 +67,8 @@ namespace {
 
     // velocities fixed on the walls and inside a ball around a point off
     // the mesh's symmetry
-    // (FE_DGP has no support points, so map_dofs_to_support_points()
-    // cannot take the whole element)
-    std::map<types::global_dof_index, Point<dim>> points;
-    {
-      const MappingQ1<dim> mapping;
-      const auto          &unit = fe.base_element(0).get_unit_support_points();
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              {
-                const auto [component, index] = fe.system_to_component_index(i);
-                if (component < dim)
-                  points[dofs[i]]
-                    = mapping.transform_unit_to_real_cell(cell, unit[index]);
-              }
-          }
-    }
+    const std::map<types::global_dof_index, Point<dim>> points
+      = testing::velocity_node_positions(MappingQ1<dim>(), dof_handler);
     const IndexSet on_walls
       = DoFTools::extract_boundary_dofs(dof_handler,
                                         fe.component_mask(

@@ -45,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "distorted_box.h"
 #include "test_utilities.h"
 #include <Epetra_CrsMatrix.h>
 
@@ -56,29 +57,17 @@ namespace {
   void
   check_update(testing::Checker &checker)
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
-    Triangulation<dim> serial;
-    GridGenerator::subdivided_hyper_cube(serial, dim == 2 ? 10 : 5, 0., 1.);
+    const MPI_Comm comm = MPI_COMM_WORLD;
     // distorted: no symmetry that could hide an entry missing from L_base
-    GridTools::distort_random(0.2, serial, false, 3);
-    GridTools::partition_triangulation(Utilities::MPI::n_mpi_processes(comm),
-                                       serial);
     parallel::fullydistributed::Triangulation<dim> tria(comm);
-    tria.create_triangulation(
-      TriangulationDescription::Utilities::
-        create_description_from_triangulation(serial, comm));
+    testing::make_distorted_box(tria, dim == 2 ? 10 : 5, 3);
 
-    const FESystem<dim> fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1);
-    DoFHandler<dim>     dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    std::vector<unsigned int> blocks(dim + 1, 0);
-    blocks[dim] = 1;
-    DoFRenumbering::component_wise(dof_handler, blocks);
-    const auto dofs_per_block
-      = DoFTools::count_dofs_per_fe_block(dof_handler, blocks);
-    const types::global_dof_index n_u   = dofs_per_block[0];
-    const IndexSet               &owned = dof_handler.locally_owned_dofs();
-    const std::vector<IndexSet>   partitioning
+    const FESystem<dim>           fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1);
+    DoFHandler<dim>               dof_handler(tria);
+    const types::global_dof_index n_u
+      = testing::distribute_velocities_first(dof_handler, fe);
+    const IndexSet             &owned = dof_handler.locally_owned_dofs();
+    const std::vector<IndexSet> partitioning
       = {owned.get_view(0, n_u), owned.get_view(n_u, owned.size())};
     IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
@@ -157,23 +146,8 @@ namespace {
       = fe.component_mask(FEValuesExtractors::Vector(0));
     const IndexSet on_walls
       = DoFTools::extract_boundary_dofs(dof_handler, velocities);
-    // (FE_DGP has no support points, so map_dofs_to_support_points()
-    // cannot take the whole element)
-    std::map<types::global_dof_index, Point<dim>> points;
-    const auto &unit_points = fe.base_element(0).get_unit_support_points();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const auto [component, index] = fe.system_to_component_index(i);
-              if (component < dim)
-                points[dofs[i]]
-                  = mapping.transform_unit_to_real_cell(cell,
-                                                        unit_points[index]);
-            }
-        }
+    const std::map<types::global_dof_index, Point<dim>> points
+      = testing::velocity_node_positions(mapping, dof_handler);
 
     fluid::PressureLaplacian       update;
     TrilinosWrappers::SparseMatrix laplacian;
