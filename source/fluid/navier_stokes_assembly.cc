@@ -142,24 +142,14 @@ namespace particulate {
                                             zero_constraints,
                                             n_velocity_dofs);
       CellBlockInsertion insertion;
-      // velocity i = dim * a + c is phi_a e_c
+      // velocity i = dim * a + c is phi_a e_c; pressures that no equation
+      // determines are invalid_dof_index
       std::vector<types::global_dof_index> velocity_dofs(dim * n_s),
         pressure_dofs(n_p);
-      const auto is_decoupled = [&](const types::global_dof_index dof) {
-        return std::binary_search(decoupled_pressure_dofs.begin(),
-                                  decoupled_pressure_dofs.end(),
-                                  dof);
-      };
       const auto insert_directly = [&]() {
         for (unsigned int a = 0; a < n_s; ++a)
           for (unsigned int c = 0; c < dim; ++c)
             velocity_dofs[dim * a + c] = dof_indices[velocity_index[a][c]];
-        for (unsigned int k = 0; k < n_p; ++k)
-          {
-            const types::global_dof_index dof = dof_indices[pressure_index[k]];
-            pressure_dofs[k]
-              = is_decoupled(dof) ? numbers::invalid_dof_index : dof;
-          }
         insertion.add_saddle_point_cell(
           system_matrix,
           zero_constraints,
@@ -330,6 +320,19 @@ namespace particulate {
               }
 
             cell->get_dof_indices(dof_indices);
+            // undetermined pressure modes (see decoupled_pressure_dofs)
+            // leave the equations: no row, no column (invalid_dof_index)
+            for (unsigned int k = 0; k < n_p; ++k)
+              {
+                const types::global_dof_index dof
+                  = dof_indices[pressure_index[k]];
+                pressure_dofs[k]
+                  = std::binary_search(decoupled_pressure_dofs.begin(),
+                                       decoupled_pressure_dofs.end(),
+                                       dof) ?
+                      numbers::invalid_dof_index :
+                      dof;
+              }
             if (direct_insertion)
               insert_directly();
             else if (assemble_matrix)
@@ -354,10 +357,8 @@ namespace particulate {
                       }
               }
 
-            // undetermined pressure modes (see decoupled_pressure_dofs)
-            // leave the equations: no row, no column
             for (unsigned int k = 0; k < n_p; ++k)
-              if (is_decoupled(dof_indices[pressure_index[k]]))
+              if (pressure_dofs[k] == numbers::invalid_dof_index)
                 {
                   const unsigned int row = pressure_index[k];
                   cell_rhs(row)          = 0.;

@@ -5,8 +5,8 @@
 // distributed box, 2D and 3D, on the ranks the test is started with;
 // random cell matrices; velocities constrained on the walls and inside a
 // ball (as the fictitious boundary constrains them), some diagonal entries
-// zero (the average-diagonal rule), some pressures decoupled (no row, no
-// column). Checks:
+// zero and some cells without any (the average-diagonal and l1-norm
+// rules), some pressures decoupled (no row, no column). Checks:
 // - the direct path applies to plain Dirichlet constraints and is refused
 //   once a constraint couples DoFs (a hanging-node-like line);
 // - ||direct - reference||_F <= 1e-14 ||reference||_F in every block (the
@@ -141,18 +141,23 @@ namespace {
           // the same numbers on any partition
           std::mt19937 random(std::hash<std::string>()(cell->id().to_string()));
           std::uniform_real_distribution<double> entry(-1., 1.);
-          local = 0.;
+          ++cell_count;
+          // every third cell without any diagonal entry (the l1-norm
+          // rule), every fifth with its pressures decoupled
+          const bool no_diagonal = cell_count % 3 == 0;
+          const bool decoupled   = cell_count % 5 == 0;
+          local                  = 0.;
           for (const unsigned int i : velocity_local)
             {
               for (const unsigned int j : velocity_local)
                 local(i, j) = entry(random);
-              // every seventh diagonal entry zero
-              local(i, i) = (dofs[i] % 7 == 0) ? 0. : 4. + entry(random);
+              // elsewhere every seventh diagonal entry zero (the average
+              // rule)
+              local(i, i)
+                = (no_diagonal || dofs[i] % 7 == 0) ? 0. : 4. + entry(random);
               for (const unsigned int k : pressure_local)
                 local(i, k) = local(k, i) = entry(random);
             }
-          // every fifth cell's pressures decoupled
-          const bool decoupled = ++cell_count % 5 == 0;
           for (unsigned int k = 0; k < pressure_local.size(); ++k)
             pressure_dofs[k] = decoupled ? numbers::invalid_dof_index :
                                            dofs[pressure_local[k]];

@@ -131,8 +131,7 @@ namespace particulate {
        * invalid_dof_index for a pressure that is to have no row and no
        * column). Constrained velocities get no row and no column, and the
        * diagonal entry distribute_local_to_global gives them: |a(i, i)|, or
-       * where that is zero the average |diagonal| of the local matrix of
-       * @p n_cell_dofs DoFs (1 if that is zero too).
+       * where that is zero zero_diagonal_replacement().
        */
       template <typename AValue, typename BValue>
       void
@@ -166,24 +165,67 @@ namespace particulate {
             });
         add(matrix.block(1, 0), pressure_kept, velocity_kept, b);
 
-        double average_diagonal = 0.;
-        for (unsigned int i = 0; i < velocity_dofs.size(); ++i)
-          average_diagonal += std::abs(a(i, i));
-        average_diagonal /= n_cell_dofs;
-        if (average_diagonal == 0.)
-          average_diagonal = 1.;
+        double fallback = -1.; // for a zero diagonal entry, when first needed
         for (unsigned int i = 0; i < velocity_dofs.size(); ++i)
           if (velocity_kept[i] == invalid_dof_index)
             {
-              const double diagonal = std::abs(a(i, i));
+              double diagonal = std::abs(a(i, i));
+              if (diagonal == 0.)
+                {
+                  if (fallback < 0.)
+                    fallback = zero_diagonal_replacement(a,
+                                                         b,
+                                                         velocity_dofs.size(),
+                                                         n_cell_dofs);
+                  diagonal = fallback;
+                }
               matrix.block(0, 0).add(velocity_dofs[i],
                                      velocity_dofs[i],
-                                     diagonal != 0. ? diagonal :
-                                                      average_diagonal);
+                                     diagonal);
             }
       }
 
     private:
+      /** What distribute_local_to_global puts on a constrained row whose
+       *  local diagonal entry is zero: the average |diagonal| of the local
+       *  matrix of @p n_cell_dofs DoFs (the pressures' are zero); where all
+       *  are zero its l1 norm (largest column sum) over @p n_cell_dofs; 1
+       *  if the local matrix is zero. Decoupled pressures (pressure_kept)
+       *  have no entries, as the cell matrix the reference path sees. */
+      template <typename AValue, typename BValue>
+      double
+      zero_diagonal_replacement(const AValue      &a,
+                                const BValue      &b,
+                                const unsigned int n_velocities,
+                                const unsigned int n_cell_dofs) const
+      {
+        double average = 0.;
+        for (unsigned int i = 0; i < n_velocities; ++i)
+          average += std::abs(a(i, i));
+        if (average != 0.)
+          return average / n_cell_dofs;
+        double l1_norm = 0.;
+        for (unsigned int j = 0; j < n_velocities; ++j)
+          {
+            double column = 0.;
+            for (unsigned int i = 0; i < n_velocities; ++i)
+              column += std::abs(a(i, j));
+            for (unsigned int k = 0; k < pressure_kept.size(); ++k)
+              if (pressure_kept[k] != dealii::numbers::invalid_dof_index)
+                column += std::abs(b(k, j));
+            l1_norm = std::max(l1_norm, column);
+          }
+        for (unsigned int k = 0; k < pressure_kept.size(); ++k)
+          if (pressure_kept[k] != dealii::numbers::invalid_dof_index)
+            {
+              double column = 0.;
+              for (unsigned int i = 0; i < n_velocities; ++i)
+                column += std::abs(b(k, i));
+              l1_norm = std::max(l1_norm, column);
+            }
+        return l1_norm != 0. ? l1_norm / n_cell_dofs : 1.;
+      }
+
       static dealii::TrilinosWrappers::types::int_type
       global_id(const dealii::types::global_dof_index index)
       {
