@@ -14,6 +14,8 @@
 #include <tuple>
 
 #include "momentum_operator.h"
+#include "pressure_near_null_space.h"
+#include "velocity_jacobian_kernel.h"
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
 #include <Epetra_Vector.h>
@@ -41,15 +43,18 @@ namespace particulate {
      */
     template <int dim>
     void
-    NavierStokes<dim>::assemble(const Stage &stage,
-                                const bool   assemble_matrix,
-                                const bool   newton)
+    NavierStokes<dim>::assemble(const Stage         &stage,
+                                const AssemblyTarget target,
+                                const bool           newton)
     {
+      const bool assemble_matrix   = target != AssemblyTarget::residual;
+      const bool assemble_residual = target != AssemblyTarget::jacobian;
       if (momentum_operator)
         {
           // nothing to assemble: the residual comes from the matrix-free
           // form, and the operator takes the iterate instead of a Jacobian
-          assemble_residual_matrix_free(stage);
+          if (assemble_residual)
+            assemble_residual_matrix_free(stage);
           if (assemble_matrix)
             linearise_momentum_operator(stage, newton);
           return;
@@ -63,7 +68,8 @@ namespace particulate {
           velocity_chebyshev.reset(); // built from the matrix it approximates
           velocity_multigrid_is_current = false;
         }
-      system_rhs = 0;
+      if (assemble_residual)
+        system_rhs = 0;
 
       const double rho         = parameters.properties.density;
       const bool   steady      = stage.time_step == 0.;
@@ -72,20 +78,33 @@ namespace particulate {
       const double te          = steady ? 0. : stage.theta_explicit;
       const bool   variable_mu = viscosity_model->depends_on_shear_rate();
 
-      const QGauss<dim>                quadrature(3);
-      FEValues<dim>                    fe_values(mapping,
-                              fe,
+      const bool has_body_force
+        = dynamic_cast<const Functions::ZeroFunction<dim> *>(body_force.get())
+          == nullptr;
+
+      // FEValues of the scalar Q2 element only: the velocity space is its
+      // dim copies, and the cell's velocity and pressure are evaluated
+      // from the cell's DoF values below. FEValues of the whole FESystem
+      // would map the gradients of all dim * n_s + n_p shape functions
+      // (3x the work in 3D) and look every vector entry up once per
+      // get_function_*() call.
+      const QGauss<dim>  quadrature(3);
+      const auto        &velocity_fe = fe.base_element(0);
+      const auto        &pressure_fe = fe.base_element(1);
+      FEValues<dim>      fe_values(mapping,
+                              velocity_fe,
                               quadrature,
-                              update_values | update_gradients
-                                | update_quadrature_points | update_JxW_values);
-      const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
-      const unsigned int               n_q           = quadrature.size();
-      const FEValuesExtractors::Vector velocities(0);
-      const FEValuesExtractors::Scalar pressure(dim);
+                              update_gradients | update_JxW_values
+                                | (has_body_force ? update_quadrature_points :
+                                                         update_default));
+      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      const unsigned int n_q           = quadrature.size();
 
       FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
       Vector<double>     cell_rhs(dofs_per_cell);
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+      std::vector<double>                  local_solution(dofs_per_cell),
+        local_old_solution(dofs_per_cell), local_mesh_velocity(dofs_per_cell);
 
       std::vector<Tensor<1, dim>> u(n_q), u_old(n_q), w(n_q);
       std::vector<Tensor<2, dim>> grad_u(n_q), grad_u_old(n_q);
@@ -102,34 +121,64 @@ namespace particulate {
       const unsigned int n_p = fe.base_element(1).n_dofs_per_cell();
       std::vector<std::array<unsigned int, dim>> velocity_index(n_s);
       std::vector<unsigned int>                  pressure_index(n_p);
-      std::vector<unsigned int>                  scalar_representative(n_s);
       for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           const auto [component, index] = fe.system_to_component_index(i);
           if (component < dim)
-            {
-              velocity_index[index][component] = i;
-              if (component == 0)
-                scalar_representative[index] = i;
-            }
+            velocity_index[index][component] = i;
           else
             pressure_index[index] = i;
         }
-      std::vector<double> phi(n_s), advect_phi(n_s), psi(n_p), diagonal(n_s);
+      // shape values of Q2 and P1disc are those of the reference cell on
+      // every cell (no mapping acts on them)
+      std::vector<std::vector<double>> phi_at(n_q, std::vector<double>(n_s)),
+        psi_at(n_q, std::vector<double>(n_p));
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          for (unsigned int a = 0; a < n_s; ++a)
+            phi_at[q][a] = velocity_fe.shape_value(a, quadrature.point(q));
+          for (unsigned int k = 0; k < n_p; ++k)
+            psi_at[q][k] = pressure_fe.shape_value(k, quadrature.point(q));
+        }
+      // velocity values (and gradients) at the quadrature points from a
+      // cell's DoF values
+      const auto evaluate_velocity
+        = [&](const std::vector<double>   &local,
+              std::vector<Tensor<1, dim>> &values,
+              std::vector<Tensor<2, dim>> *gradients) {
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                Tensor<1, dim> value;
+                Tensor<2, dim> gradient;
+                for (unsigned int a = 0; a < n_s; ++a)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    {
+                      const double coefficient = local[velocity_index[a][c]];
+                      value[c] += coefficient * phi_at[q][a];
+                      if (gradients)
+                        gradient[c] += coefficient * fe_values.shape_grad(a, q);
+                    }
+                values[q] = value;
+                if (gradients)
+                  (*gradients)[q] = gradient;
+              }
+          };
+      std::vector<double>                  phi(n_s), psi(n_p);
       std::array<std::vector<double>, dim> grad_phi_by_component;
       grad_phi_by_component.fill(std::vector<double>(n_s));
-      std::vector<Tensor<1, dim>> grad_phi(n_s);
+      std::vector<Tensor<1, dim>>     grad_phi(n_s);
+      std::array<const double *, dim> gradient_rows;
+      for (unsigned int d = 0; d < dim; ++d)
+        gradient_rows[d] = grad_phi_by_component[d].data();
       // the local matrix by blocks: (c, d) velocity components
-      std::vector<double> block_uu(dim * dim * n_s * n_s);
-      const auto          uu
-        = [&](unsigned int c, unsigned int d, unsigned int a, unsigned int b)
-        -> double & { return block_uu[((c * dim + d) * n_s + a) * n_s + b]; };
+      AssertDimension(n_s, VelocityJacobianKernel<dim>::n_s);
+      VelocityJacobianKernel<dim> jacobian_kernel(n_q);
+      const auto                  uu
+        = [&](unsigned int c, unsigned int d, unsigned int a, unsigned int b) {
+            return jacobian_kernel(c, d, a, b);
+          };
       // B: (pressure k, component d, scalar b) -> -(psi_k, d_d phi_b)
       std::vector<double> block_pu(n_p * dim * n_s);
-
-      const bool has_body_force
-        = dynamic_cast<const Functions::ZeroFunction<dim> *>(body_force.get())
-          == nullptr;
 
       // The blocks go straight into the matrix (CellBlockInsertion) unless
       // a constraint couples DoFs (hanging nodes, a slip plane that is not
@@ -168,27 +217,40 @@ namespace particulate {
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            fe_values.reinit(cell);
+            fe_values.reinit(
+              static_cast<typename Triangulation<dim>::cell_iterator>(cell));
             cell_rhs = 0;
             if (assemble_matrix)
-              {
-                std::fill(block_uu.begin(), block_uu.end(), 0.);
-                std::fill(block_pu.begin(), block_pu.end(), 0.);
-              }
+              std::fill(block_pu.begin(), block_pu.end(), 0.);
 
-            fe_values[velocities].get_function_values(solution, u);
-            fe_values[velocities].get_function_gradients(solution, grad_u);
-            fe_values[velocities].get_function_divergences(solution, div_u);
-            fe_values[pressure].get_function_values(solution, p);
-            if (!steady)
+            // each vector's cell values read once: every element read from
+            // a Trilinos vector is a hash-table lookup of its index
+            cell->get_dof_values(solution,
+                                 local_solution.begin(),
+                                 local_solution.end());
+            evaluate_velocity(local_solution, u, &grad_u);
+            for (unsigned int q = 0; q < n_q; ++q)
               {
-                fe_values[velocities].get_function_values(old_solution, u_old);
-                fe_values[velocities].get_function_gradients(old_solution,
-                                                             grad_u_old);
+                div_u[q] = trace(grad_u[q]);
+                p[q]     = 0.;
+                for (unsigned int k = 0; k < n_p; ++k)
+                  p[q] += psi_at[q][k] * local_solution[pressure_index[k]];
+              }
+            if (!steady && assemble_residual)
+              {
+                cell->get_dof_values(old_solution,
+                                     local_old_solution.begin(),
+                                     local_old_solution.end());
+                evaluate_velocity(local_old_solution, u_old, &grad_u_old);
               }
             if (has_mesh_velocity)
-              fe_values[velocities].get_function_values(mesh_velocity, w);
-            if (has_body_force)
+              {
+                cell->get_dof_values(mesh_velocity,
+                                     local_mesh_velocity.begin(),
+                                     local_mesh_velocity.end());
+                evaluate_velocity(local_mesh_velocity, w, nullptr);
+              }
+            if (has_body_force && assemble_residual)
               {
                 body_force->set_time(stage.time_new);
                 body_force->vector_value_list(fe_values.get_quadrature_points(),
@@ -203,12 +265,11 @@ namespace particulate {
                 const double JxW = fe_values.JxW(q);
                 for (unsigned int a = 0; a < n_s; ++a)
                   {
-                    phi[a] = fe_values.shape_value(scalar_representative[a], q);
-                    grad_phi[a]
-                      = fe_values.shape_grad(scalar_representative[a], q);
+                    phi[a]      = phi_at[q][a];
+                    grad_phi[a] = fe_values.shape_grad(a, q);
                   }
                 for (unsigned int k = 0; k < n_p; ++k)
-                  psi[k] = fe_values.shape_value(pressure_index[k], q);
+                  psi[k] = psi_at[q][k];
 
                 const SymmetricTensor<2, dim> D  = symmetrize(grad_u[q]);
                 const double                  mu = viscosity_model->viscosity(
@@ -217,101 +278,78 @@ namespace particulate {
                 if (has_mesh_velocity)
                   advecting -= w[q];
 
-                // strong-form vector parts of the residual: (a, v) + (S, D(v))
-                Tensor<1, dim> vector_part = ti * rho * (grad_u[q] * advecting);
-                SymmetricTensor<2, dim> tensor_part = ti * 2. * mu * D;
-                if (!steady)
+                if (assemble_residual)
                   {
-                    vector_part += mass_coeff * (u[q] - u_old[q]);
-                    if (te != 0.)
+                    // strong-form vector parts of the residual: (a, v) + (S,
+                    // D(v))
+                    Tensor<1, dim> vector_part
+                      = ti * rho * (grad_u[q] * advecting);
+                    SymmetricTensor<2, dim> tensor_part = ti * 2. * mu * D;
+                    if (!steady)
                       {
-                        const SymmetricTensor<2, dim> D_old
-                          = symmetrize(grad_u_old[q]);
-                        const double mu_old = viscosity_model->viscosity(
-                          variable_mu ? std::sqrt(2. * D_old * D_old) : 0.);
-                        Tensor<1, dim> advecting_old = u_old[q];
-                        if (has_mesh_velocity)
-                          advecting_old -= w[q];
-                        vector_part
-                          += te * rho * (grad_u_old[q] * advecting_old);
-                        tensor_part += te * 2. * mu_old * D_old;
+                        vector_part += mass_coeff * (u[q] - u_old[q]);
+                        if (te != 0.)
+                          {
+                            const SymmetricTensor<2, dim> D_old
+                              = symmetrize(grad_u_old[q]);
+                            const double mu_old = viscosity_model->viscosity(
+                              variable_mu ? std::sqrt(2. * D_old * D_old) : 0.);
+                            Tensor<1, dim> advecting_old = u_old[q];
+                            if (has_mesh_velocity)
+                              advecting_old -= w[q];
+                            vector_part
+                              += te * rho * (grad_u_old[q] * advecting_old);
+                            tensor_part += te * 2. * mu_old * D_old;
+                          }
                       }
-                  }
-                if (has_body_force)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    vector_part[d]
-                      -= rho * (ti * f_new[q][d] + te * f_old[q][d]);
+                    if (has_body_force)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        vector_part[d]
+                          -= rho * (ti * f_new[q][d] + te * f_old[q][d]);
 
-                // right-hand side -R: (a, v) + (S, D(v)) - (p, div v) for
-                // v = phi_a e_c, and -(div u, q) for q = psi_k
-                for (unsigned int a = 0; a < n_s; ++a)
-                  {
-                    const Tensor<1, dim> S_grad = tensor_part * grad_phi[a];
-                    for (unsigned int c = 0; c < dim; ++c)
-                      cell_rhs(velocity_index[a][c])
-                        -= (vector_part[c] * phi[a] + S_grad[c]
-                            - p[q] * grad_phi[a][c])
-                           * JxW;
+                    // right-hand side -R: (a, v) + (S, D(v)) - (p, div v) for
+                    // v = phi_a e_c, and -(div u, q) for q = psi_k
+                    for (unsigned int a = 0; a < n_s; ++a)
+                      {
+                        const Tensor<1, dim> S_grad = tensor_part * grad_phi[a];
+                        for (unsigned int c = 0; c < dim; ++c)
+                          cell_rhs(velocity_index[a][c])
+                            -= (vector_part[c] * phi[a] + S_grad[c]
+                                - p[q] * grad_phi[a][c])
+                               * JxW;
+                      }
+                    for (unsigned int k = 0; k < n_p; ++k)
+                      cell_rhs(pressure_index[k]) += div_u[q] * psi[k] * JxW;
                   }
-                for (unsigned int k = 0; k < n_p; ++k)
-                  cell_rhs(pressure_index[k]) += div_u[q] * psi[k] * JxW;
 
                 if (!assemble_matrix)
                   continue;
-                // Jacobian, for trial phi_b e_d and test phi_a e_c:
+                // Jacobian (see VelocityJacobianKernel), for trial phi_b
+                // e_d and test phi_a e_c:
                 //   delta_cd [rho/k phi_a phi_b + ti mu grad phi_a.grad phi_b
                 //             + ti rho phi_a (advecting.grad phi_b)]
                 //   + ti mu d_d phi_a d_c phi_b   (the transpose in D(u))
                 //   + ti rho d_d u_c phi_a phi_b  (Newton only)
-                // The loops run over b innermost on contiguous rows of the
-                // blocks (grad_phi stored by component); the pointers are
-                // declared free of aliasing, without which GCC keeps these
-                // loops scalar (a profile showed them at one double per
-                // instruction).
-                const double viscous       = ti * mu * JxW;
-                const double newton_weight = newton ? ti * rho * JxW : 0.;
                 for (unsigned int b = 0; b < n_s; ++b)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    grad_phi_by_component[d][b] = grad_phi[b][d];
+                const double newton_weight = newton ? ti * rho * JxW : 0.;
+                std::array<double, dim>       advection;
+                std::array<double, dim * dim> newton_term;
+                for (unsigned int c = 0; c < dim; ++c)
                   {
-                    advect_phi[b] = ti * rho * (advecting * grad_phi[b]) * JxW;
+                    advection[c] = ti * rho * advecting[c] * JxW;
                     for (unsigned int d = 0; d < dim; ++d)
-                      grad_phi_by_component[d][b] = grad_phi[b][d];
+                      newton_term[c * dim + d]
+                        = newton_weight * grad_u[q][c][d];
                   }
-                const double *__restrict const phi_b    = phi.data();
-                const double *__restrict const advect_b = advect_phi.data();
-                double *__restrict const diag           = diagonal.data();
-                for (unsigned int a = 0; a < n_s; ++a)
-                  {
-                    const double mass_a = mass_coeff * phi[a] * JxW;
-                    const double phi_a  = phi[a];
-                    for (unsigned int b = 0; b < n_s; ++b)
-                      diag[b] = mass_a * phi_b[b] + phi_a * advect_b[b];
-                    for (unsigned int e = 0; e < dim; ++e)
-                      {
-                        const double *__restrict const grad_e
-                          = grad_phi_by_component[e].data();
-                        const double weight = viscous * grad_phi[a][e];
-                        for (unsigned int b = 0; b < n_s; ++b)
-                          diag[b] += weight * grad_e[b];
-                      }
-                    for (unsigned int c = 0; c < dim; ++c)
-                      for (unsigned int d = 0; d < dim; ++d)
-                        {
-                          double *__restrict const row = &uu(c, d, a, 0);
-                          const double *__restrict const grad_c
-                            = grad_phi_by_component[c].data();
-                          const double transposed = viscous * grad_phi[a][d];
-                          const double convective
-                            = newton_weight * phi_a * grad_u[q][c][d];
-                          if (c == d)
-                            for (unsigned int b = 0; b < n_s; ++b)
-                              row[b] += transposed * grad_c[b]
-                                        + convective * phi_b[b] + diag[b];
-                          else
-                            for (unsigned int b = 0; b < n_s; ++b)
-                              row[b] += transposed * grad_c[b]
-                                        + convective * phi_b[b];
-                        }
-                  }
+                jacobian_kernel.set_quadrature_point(q,
+                                                     phi.data(),
+                                                     gradient_rows.data(),
+                                                     mass_coeff * JxW,
+                                                     ti * mu * JxW,
+                                                     advection.data(),
+                                                     newton_term.data());
                 for (unsigned int k = 0; k < n_p; ++k)
                   for (unsigned int d = 0; d < dim; ++d)
                     for (unsigned int b = 0; b < n_s; ++b)
@@ -319,6 +357,8 @@ namespace particulate {
                         -= psi[k] * grad_phi[b][d] * JxW;
               }
 
+            if (assemble_matrix)
+              jacobian_kernel.compute();
             cell->get_dof_indices(dof_indices);
             // undetermined pressure modes (see decoupled_pressure_dofs)
             // leave the equations: no row, no column (invalid_dof_index)
@@ -369,20 +409,25 @@ namespace particulate {
                         cell_matrix(i, row) = 0.;
                       }
                 }
-            if (assemble_matrix && !direct_insertion)
+            if (assemble_matrix && !direct_insertion && assemble_residual)
               zero_constraints.distribute_local_to_global(cell_matrix,
                                                           cell_rhs,
                                                           dof_indices,
                                                           system_matrix,
                                                           system_rhs);
-            else
+            else if (assemble_matrix && !direct_insertion)
+              zero_constraints.distribute_local_to_global(cell_matrix,
+                                                          dof_indices,
+                                                          system_matrix);
+            else if (assemble_residual)
               zero_constraints.distribute_local_to_global(cell_rhs,
                                                           dof_indices,
                                                           system_rhs);
           }
       if (assemble_matrix)
         system_matrix.compress(VectorOperation::add);
-      system_rhs.compress(VectorOperation::add);
+      if (assemble_residual)
+        system_rhs.compress(VectorOperation::add);
     }
 
 
@@ -485,7 +530,8 @@ namespace particulate {
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            fe_values.reinit(cell);
+            fe_values.reinit(
+              static_cast<typename Triangulation<dim>::cell_iterator>(cell));
             body_force->set_time(stage.time_new);
             body_force->vector_value_list(fe_values.get_quadrature_points(),
                                           f_new);
@@ -652,9 +698,12 @@ namespace particulate {
       // dominate, not the aggregation), and keeping the old V-cycle for
       // the updated L_p tripled the CG iterations (6.3 -> 18.7 per solve):
       // a pressure freed by the body was an isolated row in the old one.
-      // Near-null space for ML. L_p's is the constant pressure, i.e. the
-      // constant mode's DoF of every cell (1) and none of the linear modes
-      // (0). Given alone, an aggregate of linear-mode DoFs only (left where
+      // Near-null space for ML. L_p's null space is the constant pressure,
+      // i.e. the constant mode's DoF of every cell (1) and none of the
+      // linear modes (0); its near-null space also holds the linear
+      // pressures (pressure_near_null_space()), which are given where the
+      // cells are blocks (below). The constant alone as 0/1 vectors: an
+      // aggregate of linear-mode DoFs only (left where
       // a cut cell's constant mode is decoupled, see
       // decoupled_pressure_dofs) has a zero null space, its tentative
       // prolongator is singular and the V-cycle returns NaN (ten Cate E4
@@ -729,6 +778,21 @@ namespace particulate {
                                   distributed_modes,
                                   pressure_laplacian);
           ml_parameters.set("PDE equations", static_cast<int>(dim + 1));
+          // the constant and the linear pressures: with the constant
+          // alone the inner CG needed 6.5 iterations per L_p solve on the
+          // 3D channel at level 2, with both 4.6 (doc/performance.md,
+          // "The assembled path under 200 us")
+          if (laplace_near_null_space.empty())
+            laplace_near_null_space
+              = pressure_near_null_space(mapping,
+                                         dof_handler,
+                                         owned_pressures,
+                                         dofs_per_block[0],
+                                         communicator);
+          ml_parameters.set("null space: type", "pre-computed");
+          ml_parameters.set("null space: dimension", static_cast<int>(dim + 1));
+          ml_parameters.set("null space: vectors",
+                            laplace_near_null_space.data());
           laplace_amg->initialize(pressure_laplacian, ml_parameters);
         }
       else
@@ -745,9 +809,9 @@ namespace particulate {
     }
 
     template void
-    NavierStokes<2>::assemble(const Stage &, const bool, const bool);
+    NavierStokes<2>::assemble(const Stage &, const AssemblyTarget, const bool);
     template void
-    NavierStokes<3>::assemble(const Stage &, const bool, const bool);
+    NavierStokes<3>::assemble(const Stage &, const AssemblyTarget, const bool);
     template void
     NavierStokes<2>::linearise_momentum_operator(const Stage &, const bool);
     template void

@@ -321,6 +321,7 @@ namespace particulate {
       // ILU smoothers ask the matrix for its communicator when destroyed
       velocity_amg.reset();
       laplace_amg.reset();
+      laplace_near_null_space.clear();
       mass_ilu.reset();
       system_matrix.clear();
       gradient_matrix.clear();
@@ -398,6 +399,7 @@ namespace particulate {
       // B, M_p and the lumped velocity mass change: what was built from
       // them goes (preconditioners before their matrices)
       mass_ilu.reset();
+      laplace_near_null_space.clear();
       pressure_laplacian_update.clear();
       pressure_mass                  = 0.;
       schur_approximation_is_current = false;

@@ -643,7 +643,7 @@ namespace particulate {
       bool            newton = nl.method == "Newton";
       // A stage nearly always needs at least one iteration: assembling the
       // first matrix with the initial residual saves a residual assembly.
-      assemble(stage, true, newton);
+      assemble(stage, AssemblyTarget::jacobian_and_residual, newton);
       bool         matrix_is_current = true;
       double       residual          = system_rhs.l2_norm();
       const double initial_residual  = residual;
@@ -676,8 +676,10 @@ namespace particulate {
                          "solver'.";
               throw std::runtime_error(message.str());
             }
+          // system_rhs already holds the residual of this iterate (the
+          // damped update below assembled it)
           if (!matrix_is_current)
-            assemble(stage, true, newton);
+            assemble(stage, AssemblyTarget::jacobian, newton);
           matrix_is_current = false;
           // Inexact Newton: solving the update more accurately than a tenth
           // of the stage's target cannot lower the residual below it, so the
@@ -702,7 +704,7 @@ namespace particulate {
               for (const auto dof : decoupled_pressure_dofs)
                 iterate(dof) = 0.;
               solution = iterate;
-              assemble(stage, false, newton);
+              assemble(stage, AssemblyTarget::residual, newton);
               new_residual = system_rhs.l2_norm();
               if (new_residual < residual || !std::isfinite(residual))
                 break;

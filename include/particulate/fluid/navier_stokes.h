@@ -300,10 +300,19 @@ namespace particulate {
       /** The pressure mass matrix and the lumped velocity mass. */
       void
       assemble_geometric_matrices();
+      /** What assemble() computes: the right-hand side -R of the current
+       *  iterate into system_rhs, the Jacobian into system_matrix, or
+       *  both in one pass over the cells. */
+      enum class AssemblyTarget
+      {
+        residual,
+        jacobian,
+        jacobian_and_residual
+      };
       void
-      assemble(const Stage &stage,
-               const bool   assemble_matrix,
-               const bool   newton);
+      assemble(const Stage         &stage,
+               const AssemblyTarget target,
+               const bool           newton);
       /** With the matrix-free velocity operator: hand the current iterate
        *  to it (what assembling the Jacobian is for the assembled one). */
       void
@@ -443,6 +452,9 @@ namespace particulate {
       void
       refresh_multigrid_geometry();
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
+      /// the near-null space of L_p's AMG (pressure_near_null_space()):
+      /// it depends on the mesh only, so it is kept until the mesh moves
+      std::vector<double> laplace_near_null_space;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
     };
   } // namespace fluid
