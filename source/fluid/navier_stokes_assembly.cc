@@ -171,7 +171,9 @@ namespace particulate {
       for (unsigned int d = 0; d < dim; ++d)
         gradient_rows[d] = grad_phi_by_component[d].data();
       // the local matrix by blocks: (c, d) velocity components
-      AssertDimension(n_s, VelocityJacobianKernel<dim>::n_s);
+      AssertThrow(n_s == VelocityJacobianKernel<dim>::n_s,
+                  ExcMessage("The Jacobian kernel is written for Q2 "
+                             "velocities."));
       VelocityJacobianKernel<dim> jacobian_kernel(n_q);
       const auto                  uu
         = [&](unsigned int c, unsigned int d, unsigned int a, unsigned int b) {
@@ -280,8 +282,7 @@ namespace particulate {
 
                 if (assemble_residual)
                   {
-                    // strong-form vector parts of the residual: (a, v) + (S,
-                    // D(v))
+                    // the residual's strong-form parts: (a, v) + (S, D(v))
                     Tensor<1, dim> vector_part
                       = ti * rho * (grad_u[q] * advecting);
                     SymmetricTensor<2, dim> tensor_part = ti * 2. * mu * D;
@@ -781,7 +782,7 @@ namespace particulate {
           // the constant and the linear pressures: with the constant
           // alone the inner CG needed 6.5 iterations per L_p solve on the
           // 3D channel at level 2, with both 4.6 (doc/performance.md,
-          // "The assembled path under 200 us")
+          // "The assembled path under 200 µs")
           if (laplace_near_null_space.empty())
             laplace_near_null_space
               = pressure_near_null_space(mapping,

@@ -5,6 +5,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 

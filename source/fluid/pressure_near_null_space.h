@@ -19,15 +19,14 @@ namespace particulate {
      * aggregation: the constant and the dim linear functions x_d, each put
      * into the discontinuous P1 pressure space cell by cell (L2 projection).
      *
-     * With the constant alone, the coarse levels see a pressure as one value
-     * per aggregate and cannot represent the slope inside the aggregate that
-     * any smooth pressure has; the P1disc slope DoFs of a smooth error are
-     * then left to the smoother. A linear pressure is a near-null vector of
-     * L_p as much as a constant one (its gradient is constant, so
-     * B^T p is a pressure force that the divergence of a lumped-mass
-     * velocity nearly cancels away from boundaries), which is what smoothed
-     * aggregation needs to be told, as the rigid-body modes are for
-     * elasticity.
+     * With the constant alone, the coarse levels see a pressure as one
+     * value per aggregate and cannot represent the slope that any smooth
+     * pressure has inside the aggregate; the P1disc slope DoFs of a smooth
+     * error are then left to the smoother. A linear pressure is as much a
+     * near-null vector of L_p as the constant: D^{-1} B^T p is then nearly
+     * the constant velocity grad p, whose discrete divergence B vanishes
+     * in cells away from constrained velocities. Smoothed aggregation
+     * needs to be told, as it is told the rigid-body modes of elasticity.
      *
      * The coordinates are taken relative to the centre of the mesh's
      * bounding box and divided by its diagonal, so that the vectors are of
