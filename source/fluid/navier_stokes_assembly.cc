@@ -163,7 +163,6 @@ namespace particulate {
                   (*gradients)[q] = gradient;
               }
           };
-      std::vector<double>                  phi(n_s), psi(n_p);
       std::array<std::vector<double>, dim> grad_phi_by_component;
       grad_phi_by_component.fill(std::vector<double>(n_s));
       std::vector<Tensor<1, dim>>     grad_phi(n_s);
@@ -264,14 +263,11 @@ namespace particulate {
 
             for (unsigned int q = 0; q < n_q; ++q)
               {
-                const double JxW = fe_values.JxW(q);
+                const double               JxW = fe_values.JxW(q);
+                const std::vector<double> &phi = phi_at[q];
+                const std::vector<double> &psi = psi_at[q];
                 for (unsigned int a = 0; a < n_s; ++a)
-                  {
-                    phi[a]      = phi_at[q][a];
-                    grad_phi[a] = fe_values.shape_grad(a, q);
-                  }
-                for (unsigned int k = 0; k < n_p; ++k)
-                  psi[k] = psi_at[q][k];
+                  grad_phi[a] = fe_values.shape_grad(a, q);
 
                 const SymmetricTensor<2, dim> D  = symmetrize(grad_u[q]);
                 const double                  mu = viscosity_model->viscosity(
