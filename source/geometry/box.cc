@@ -7,7 +7,9 @@ namespace particulate::geometry {
     : h(half_extents)
   {
     if (!(half_extents.array() > 0.).all() || !half_extents.allFinite())
-      throw GeometryError("Box: all half extents must be positive and finite.");
+      throw GeometryError("Box: all three half extents must be positive "
+                          "finite lengths in m (half, not full, edge "
+                          "lengths).");
   }
 
   double
@@ -47,6 +49,41 @@ namespace particulate::geometry {
   Box::volume() const
   {
     return 8. * h.prod();
+  }
+
+
+
+  Eigen::Matrix3d
+  Box::unit_inertia() const
+  {
+    const Eigen::Vector3d s = h.cwiseAbs2();
+    return (volume() / 3.
+            * Eigen::Vector3d(s[1] + s[2], s[0] + s[2], s[0] + s[1]))
+      .asDiagonal();
+  }
+
+
+
+  Eigen::Vector3d
+  Box::support(const Eigen::Vector3d &d) const
+  {
+    return Eigen::Vector3d(d[0] >= 0. ? h[0] : -h[0],
+                           d[1] >= 0. ? h[1] : -h[1],
+                           d[2] >= 0. ? h[2] : -h[2]);
+  }
+
+
+
+  std::vector<Eigen::Vector3d>
+  Box::surface_points() const
+  {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int k = -1; k <= 1; ++k)
+          if (i != 0 || j != 0 || k != 0)
+            points.push_back(h.cwiseProduct(Eigen::Vector3d(i, j, k)));
+    return points;
   }
 
 } // namespace particulate::geometry

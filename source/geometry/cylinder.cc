@@ -51,4 +51,47 @@ namespace particulate::geometry {
     return 2. * M_PI * r * r * hh;
   }
 
+
+
+  Eigen::Matrix3d
+  Cylinder::unit_inertia() const
+  {
+    const double V = volume(), L = 2. * hh;
+    const double transverse = V * (3. * r * r + L * L) / 12.;
+    return Eigen::Vector3d(transverse, transverse, 0.5 * V * r * r)
+      .asDiagonal();
+  }
+
+
+
+  Eigen::Vector3d
+  Cylinder::support(const Eigen::Vector3d &d) const
+  {
+    const double    rho = std::hypot(d[0], d[1]);
+    Eigen::Vector3d s(0., 0., d[2] >= 0. ? hh : -hh);
+    if (rho > 0.)
+      {
+        s[0] = r * d[0] / rho;
+        s[1] = r * d[1] / rho;
+      }
+    return s;
+  }
+
+
+
+  std::vector<Eigen::Vector3d>
+  Cylinder::surface_points() const
+  {
+    std::vector<Eigen::Vector3d> points;
+    for (int k = 0; k < 16; ++k)
+      {
+        const double a = 2. * M_PI * k / 16.;
+        for (const double z : {-hh, 0., hh})
+          points.emplace_back(r * std::cos(a), r * std::sin(a), z);
+      }
+    points.emplace_back(0., 0., hh);
+    points.emplace_back(0., 0., -hh);
+    return points;
+  }
+
 } // namespace particulate::geometry

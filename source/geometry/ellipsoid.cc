@@ -196,7 +196,8 @@ namespace particulate::geometry {
   {
     if (!(semi_axes.array() > 0.).all() || !semi_axes.allFinite())
       throw GeometryError(
-        "Ellipsoid: all semi-axes must be positive and finite.");
+        "Ellipsoid: all three semi-axes must be positive finite lengths in "
+        "m.");
   }
 
   double
@@ -248,6 +249,44 @@ namespace particulate::geometry {
   Ellipsoid::volume() const
   {
     return 4. / 3. * M_PI * e.prod();
+  }
+
+
+
+  Eigen::Matrix3d
+  Ellipsoid::unit_inertia() const
+  {
+    const Eigen::Vector3d s = e.cwiseAbs2();
+    return (volume() / 5.
+            * Eigen::Vector3d(s[1] + s[2], s[0] + s[2], s[0] + s[1]))
+      .asDiagonal();
+  }
+
+
+
+  Eigen::Vector3d
+  Ellipsoid::support(const Eigen::Vector3d &d) const
+  {
+    const Eigen::Vector3d ed = e.cwiseProduct(d);
+    const double          n  = ed.norm();
+    if (!(n > 0.))
+      return Eigen::Vector3d(0., 0., e[2]);
+    return e.cwiseProduct(ed) / n;
+  }
+
+
+
+  std::vector<Eigen::Vector3d>
+  Ellipsoid::surface_points() const
+  {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int k = -1; k <= 1; ++k)
+          if (i != 0 || j != 0 || k != 0)
+            points.push_back(
+              e.cwiseProduct(Eigen::Vector3d(i, j, k).normalized()));
+    return points;
   }
 
 } // namespace particulate::geometry

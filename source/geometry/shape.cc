@@ -1,12 +1,27 @@
 #include <particulate/geometry/shape.h>
 
+#include <cmath>
+#include <limits>
+
 namespace particulate::geometry {
+
+  Eigen::Vector3d
+  Shape::closest_point(const Eigen::Vector3d &p) const
+  {
+    Eigen::Vector3d n;
+    const double    d = signed_distance(p, &n);
+    return p - d * n;
+  }
+
+
 
   bool
   Shape::contains(const Eigen::Vector3d &p) const
   {
     return signed_distance(p) <= 0.;
   }
+
+
 
   void
   Shape::contains_points(const Eigen::Vector3d *points,
@@ -16,6 +31,8 @@ namespace particulate::geometry {
     for (std::size_t i = 0; i < count; ++i)
       inside[i] = contains(points[i]);
   }
+
+
 
   void
   Shape::signed_distances(const std::vector<Eigen::Vector3d> &points,
@@ -28,6 +45,39 @@ namespace particulate::geometry {
     for (std::size_t i = 0; i < points.size(); ++i)
       distances[i]
         = signed_distance(points[i], normals ? &(*normals)[i] : nullptr);
+  }
+
+
+
+  double
+  Shape::bounding_radius() const
+  {
+    if (!is_bounded())
+      return std::numeric_limits<double>::infinity();
+    const BoundingBox box = bounding_box();
+    return box.lower.cwiseAbs().cwiseMax(box.upper.cwiseAbs()).norm();
+  }
+
+
+
+  Eigen::Matrix3d
+  Shape::unit_inertia() const
+  {
+    throw GeometryError("The shape '" + name()
+                        + "' does not know its inertia, so it can only be a "
+                          "fixed body; give a surface mesh or an analytic "
+                          "shape for a body that moves.");
+  }
+
+
+
+  Eigen::Vector3d
+  Shape::support(const Eigen::Vector3d &) const
+  {
+    throw GeometryError("The shape '" + name()
+                        + "' is not convex and bounded, so it has no support "
+                          "function; the narrow phase must use its signed "
+                          "distance instead.");
   }
 
 } // namespace particulate::geometry

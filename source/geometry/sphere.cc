@@ -9,8 +9,12 @@ namespace particulate::geometry {
     : r(radius)
   {
     if (!(radius > 0.) || !std::isfinite(radius))
-      throw GeometryError("Sphere: the radius must be positive and finite.");
+      throw GeometryError("Sphere: the radius must be a positive finite "
+                          "length in m, got "
+                          + std::to_string(radius) + ".");
   }
+
+
 
   double
   Sphere::signed_distance(const Eigen::Vector3d &p,
@@ -18,15 +22,19 @@ namespace particulate::geometry {
   {
     const double d = p.norm();
     if (normal)
-      *normal = d > 0. ? Eigen::Vector3d(p / d) : Eigen::Vector3d::UnitX();
+      *normal = d > 0. ? Eigen::Vector3d(p / d) : Eigen::Vector3d::UnitZ();
     return d - r;
   }
+
+
 
   bool
   Sphere::contains(const Eigen::Vector3d &p) const
   {
     return p.squaredNorm() <= r * r;
   }
+
+
 
   BoundingBox
   Sphere::bounding_box() const
@@ -35,10 +43,43 @@ namespace particulate::geometry {
                        Eigen::Vector3d::Constant(r));
   }
 
+
+
   double
   Sphere::volume() const
   {
     return 4. / 3. * M_PI * r * r * r;
+  }
+
+
+
+  Eigen::Matrix3d
+  Sphere::unit_inertia() const
+  {
+    return Eigen::Matrix3d::Identity() * (0.4 * volume() * r * r);
+  }
+
+
+
+  Eigen::Vector3d
+  Sphere::support(const Eigen::Vector3d &d) const
+  {
+    const double n = d.norm();
+    return n > 0. ? Eigen::Vector3d(r / n * d) : Eigen::Vector3d(0., 0., r);
+  }
+
+
+
+  std::vector<Eigen::Vector3d>
+  Sphere::surface_points() const
+  {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int k = -1; k <= 1; ++k)
+          if (i != 0 || j != 0 || k != 0)
+            points.push_back(r * Eigen::Vector3d(i, j, k).normalized());
+    return points;
   }
 
 } // namespace particulate::geometry

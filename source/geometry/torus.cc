@@ -45,4 +45,32 @@ namespace particulate::geometry {
     return 2. * M_PI * M_PI * R * r * r;
   }
 
+
+
+  Eigen::Matrix3d
+  Torus::unit_inertia() const
+  {
+    const double V          = volume();
+    const double transverse = V * (R * R / 2. + 5. / 8. * r * r);
+    return Eigen::Vector3d(transverse, transverse, V * (R * R + 0.75 * r * r))
+      .asDiagonal();
+  }
+
+
+
+  std::vector<Eigen::Vector3d>
+  Torus::surface_points() const
+  {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 36; ++i)
+      for (int j = 0; j < 12; ++j)
+        {
+          const double u = 2. * M_PI * i / 36., v = 2. * M_PI * j / 12.;
+          points.emplace_back((R + r * std::cos(v)) * std::cos(u),
+                              (R + r * std::cos(v)) * std::sin(u),
+                              r * std::sin(v));
+        }
+    return points;
+  }
+
 } // namespace particulate::geometry

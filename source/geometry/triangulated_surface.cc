@@ -75,7 +75,7 @@ namespace particulate::geometry {
     Tree                  tree;
     std::unique_ptr<Side> side;
     BoundingBox           box;
-    double                volume = 0.;
+    MassProperties        mass;
 
     // Pseudo-normals (Bærentzen-Aanæs): unit face normals, per face the
     // normals of its three edges (sum of the two adjacent face normals; edge e
@@ -153,9 +153,9 @@ namespace particulate::geometry {
         + check.describe()
         + "Read meshes with read_surface_mesh, which checks and "
           "orients them.");
-    impl->mesh   = mesh;
-    impl->volume = compute_mass_properties(mesh).volume; // throws if inward
-    impl->box    = mesh.bounding_box();
+    impl->mesh = mesh;
+    impl->mass = compute_mass_properties(mesh); // throws if inward
+    impl->box  = mesh.bounding_box();
 
     auto &sm = impl->sm;
     sm.reserve(mesh.vertices.size(),
@@ -290,7 +290,25 @@ namespace particulate::geometry {
   double
   TriangulatedSurface::volume() const
   {
-    return impl->volume;
+    return impl->mass.volume;
+  }
+
+  Eigen::Vector3d
+  TriangulatedSurface::centroid() const
+  {
+    return impl->mass.centre;
+  }
+
+  Eigen::Matrix3d
+  TriangulatedSurface::unit_inertia() const
+  {
+    return impl->mass.inertia;
+  }
+
+  std::vector<Eigen::Vector3d>
+  TriangulatedSurface::surface_points() const
+  {
+    return impl->mesh.vertices;
   }
 
   const TriangleMesh &

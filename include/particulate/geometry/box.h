@@ -22,6 +22,18 @@ namespace particulate::geometry {
       return h;
     }
 
+    ShapeKind
+    kind() const override
+    {
+      return ShapeKind::box;
+    }
+
+    std::string
+    name() const override
+    {
+      return "box";
+    }
+
     double
     signed_distance(const Eigen::Vector3d &p,
                     Eigen::Vector3d       *normal = nullptr) const override;
@@ -30,7 +42,31 @@ namespace particulate::geometry {
     bounding_box() const override;
 
     double
+    bounding_radius() const override
+    {
+      return h.norm();
+    }
+
+    double
     volume() const override;
+
+    /** V (h_j^2 + h_k^2) / 3 on the diagonal. */
+    Eigen::Matrix3d
+    unit_inertia() const override;
+
+    bool
+    is_convex() const override
+    {
+      return true;
+    }
+
+    /** The corner in the octant of @p d. */
+    Eigen::Vector3d
+    support(const Eigen::Vector3d &d) const override;
+
+    /** Corners, edge midpoints and face centres. */
+    std::vector<Eigen::Vector3d>
+    surface_points() const override;
 
   private:
     Eigen::Vector3d h;

@@ -21,6 +21,12 @@ namespace particulate::geometry {
     /** @param map a built distance map (shared, not copied) */
     explicit DistanceMapShape(std::shared_ptr<const DistanceMap> map);
 
+    std::string
+    name() const override
+    {
+      return "distance map";
+    }
+
     double
     signed_distance(const Eigen::Vector3d &p,
                     Eigen::Vector3d       *normal = nullptr) const override;

@@ -19,6 +19,25 @@ namespace particulate::geometry {
     /** @param semi_axes (a, b, c), all > 0 [m] */
     explicit Ellipsoid(const Eigen::Vector3d &semi_axes);
 
+    /** Semi-axes (a, b, c) [m]. */
+    const Eigen::Vector3d &
+    semi_axes() const
+    {
+      return e;
+    }
+
+    ShapeKind
+    kind() const override
+    {
+      return ShapeKind::ellipsoid;
+    }
+
+    std::string
+    name() const override
+    {
+      return "ellipsoid";
+    }
+
     double
     signed_distance(const Eigen::Vector3d &p,
                     Eigen::Vector3d       *normal = nullptr) const override;
@@ -31,7 +50,31 @@ namespace particulate::geometry {
     bounding_box() const override;
 
     double
+    bounding_radius() const override
+    {
+      return e.maxCoeff();
+    }
+
+    double
     volume() const override;
+
+    /** V (b^2 + c^2) / 5 and its permutations on the diagonal. */
+    Eigen::Matrix3d
+    unit_inertia() const override;
+
+    bool
+    is_convex() const override
+    {
+      return true;
+    }
+
+    /** e^2 d / |e d| (componentwise products). */
+    Eigen::Vector3d
+    support(const Eigen::Vector3d &d) const override;
+
+    /** The 26 cube-neighbour directions scaled onto the surface. */
+    std::vector<Eigen::Vector3d>
+    surface_points() const override;
 
   private:
     Eigen::Vector3d e;

@@ -18,6 +18,38 @@ namespace particulate::geometry {
      */
     HalfSpace(const Eigen::Vector3d &normal, const double offset);
 
+    /** Unit outward normal n. */
+    const Eigen::Vector3d &
+    normal() const
+    {
+      return n;
+    }
+
+    /** Offset c of the plane n.x = c [m]. */
+    double
+    offset() const
+    {
+      return c;
+    }
+
+    ShapeKind
+    kind() const override
+    {
+      return ShapeKind::half_space;
+    }
+
+    std::string
+    name() const override
+    {
+      return "half-space";
+    }
+
+    bool
+    is_bounded() const override
+    {
+      return false;
+    }
+
     double
     signed_distance(const Eigen::Vector3d &p,
                     Eigen::Vector3d       *normal = nullptr) const override;

@@ -7,7 +7,7 @@ namespace particulate::geometry {
 
   /**
    * A ball of radius r centred at the body-frame origin; exact distance
-   * |p| - r.
+   * |p| - r. In a 2D run a disk is a cylinder, not a sphere.
    */
   class Sphere : public Shape
   {
@@ -22,6 +22,18 @@ namespace particulate::geometry {
       return r;
     }
 
+    ShapeKind
+    kind() const override
+    {
+      return ShapeKind::sphere;
+    }
+
+    std::string
+    name() const override
+    {
+      return "sphere";
+    }
+
     double
     signed_distance(const Eigen::Vector3d &p,
                     Eigen::Vector3d       *normal = nullptr) const override;
@@ -34,7 +46,36 @@ namespace particulate::geometry {
     bounding_box() const override;
 
     double
+    bounding_radius() const override
+    {
+      return r;
+    }
+
+    double
     volume() const override;
+
+    /** (2/5) V r^2 on the diagonal. */
+    Eigen::Matrix3d
+    unit_inertia() const override;
+
+    bool
+    is_convex() const override
+    {
+      return true;
+    }
+
+    Eigen::Vector3d
+    support(const Eigen::Vector3d &d) const override;
+
+    double
+    core_radius() const override
+    {
+      return r;
+    }
+
+    /** 26 points in the directions of a cube cell's neighbours. */
+    std::vector<Eigen::Vector3d>
+    surface_points() const override;
 
   private:
     double r;

@@ -20,6 +20,12 @@ namespace particulate::geometry {
      */
     Torus(const double major_radius, const double minor_radius);
 
+    std::string
+    name() const override
+    {
+      return "torus";
+    }
+
     double
     signed_distance(const Eigen::Vector3d &p,
                     Eigen::Vector3d       *normal = nullptr) const override;
@@ -28,7 +34,22 @@ namespace particulate::geometry {
     bounding_box() const override;
 
     double
+    bounding_radius() const override
+    {
+      return R + r;
+    }
+
+    double
     volume() const override;
+
+    /** V (R^2/2 + 5r^2/8) about the transverse axes, V (R^2 + 3r^2/4)
+     *  about z. */
+    Eigen::Matrix3d
+    unit_inertia() const override;
+
+    /** 36 x 12 points on a grid of the two angles. */
+    std::vector<Eigen::Vector3d>
+    surface_points() const override;
 
   private:
     double R;

@@ -33,6 +33,12 @@ namespace particulate::geometry {
      */
     explicit TriangulatedSurface(const TriangleMesh &mesh);
     ~TriangulatedSurface() override;
+
+    std::string
+    name() const override
+    {
+      return "surface mesh";
+    }
     TriangulatedSurface(TriangulatedSurface &&) noexcept;
     TriangulatedSurface &
     operator=(TriangulatedSurface &&) noexcept;
@@ -60,7 +66,7 @@ namespace particulate::geometry {
 
     /** CGAL's closest point on the surface to @p p [m]. */
     Eigen::Vector3d
-    closest_point(const Eigen::Vector3d &p) const;
+    closest_point(const Eigen::Vector3d &p) const override;
 
     BoundingBox
     bounding_box() const override;
@@ -68,6 +74,19 @@ namespace particulate::geometry {
     /** Enclosed volume by the divergence theorem [m^3]. */
     double
     volume() const override;
+
+    /** Exact centroid of the polyhedron (compute_mass_properties) [m]. */
+    Eigen::Vector3d
+    centroid() const override;
+
+    /** Exact inertia of the polyhedron for unit density about its centroid,
+     *  in the mesh's frame [m^5]. */
+    Eigen::Matrix3d
+    unit_inertia() const override;
+
+    /** The mesh vertices. */
+    std::vector<Eigen::Vector3d>
+    surface_points() const override;
 
     /** The surface this shape was built from. */
     const TriangleMesh &

@@ -188,6 +188,11 @@ namespace {
     explicit OneByOne(const Shape &s)
       : s(s)
     {}
+    std::string
+    name() const override
+    {
+      return s.name();
+    }
     double
     signed_distance(const Vector3d &p, Vector3d *normal) const override
     {
