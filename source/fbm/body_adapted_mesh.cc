@@ -2,50 +2,64 @@
 #include <particulate/core/mesh.h>
 #include <particulate/deformation/distance_field.h>
 #include <particulate/fbm/body_adapted_mesh.h>
+#include <particulate/fbm/particle_shape.h>
 #include <particulate/geometry/cylinder.h>
-#include <particulate/geometry/sphere.h>
 
 #include <limits>
 
 namespace particulate {
   namespace fbm {
+    namespace {
+      /**
+       * The shape the mesh adapts to: the body's own, except for a cylinder
+       * along z that reaches through the domain, which shows the mesh its
+       * lateral surface alone. That is every 2D disk (the nodes lie in its
+       * mid-plane) and a 3D cylinder at least as long as the domain along
+       * z, as in the oscillating-cylinder slab: its caps lie on the end
+       * walls or outside. With the caps in the distance field, a vertex of
+       * an end wall inside the disk lies on the body's surface (a cap)
+       * already and is never projected onto the lateral one: in a short
+       * piece of the slab 12 vertices of each end wall came to lie on the
+       * lateral surface against 18 of the middle layer, 16 on every layer
+       * without the caps (tests/fbm/cylinder_adapted_mesh.cc).
+       */
+      template <int dim>
+      std::shared_ptr<const geometry::Shape>
+      shape_seen_by_mesh(std::shared_ptr<const geometry::Shape> shape,
+                         const dealii::Triangulation<dim>      &tria)
+      {
+        if (shape->kind() != geometry::ShapeKind::cylinder)
+          return shape;
+        const auto  &cylinder = static_cast<const geometry::Cylinder &>(*shape);
+        const double radius   = cylinder.radius();
+        if (dim == 2)
+          return std::make_shared<geometry::Cylinder>(radius, 1e3 * radius);
+        const auto [lower, upper]
+          = core::global_bounding_box(tria, tria.get_communicator());
+        const double span = upper[dim - 1] - lower[dim - 1];
+        if (2. * cylinder.half_height() < span * (1. - 1e-9))
+          return shape;
+        return std::make_shared<geometry::Cylinder>(radius,
+                                                    1e3 * (span + radius));
+      }
+    } // namespace
+
+
+
     template <int dim>
     BodyAdaptedMesh<dim>::BodyAdaptedMesh(
-      const core::MeshParameters               &mesh,
-      const deformation::DeformationParameters &parameters,
-      const ParticleParameters                 &particles,
-      dealii::Triangulation<dim>               &tria)
+      const core::MeshParameters                                &mesh,
+      const deformation::DeformationParameters                  &parameters,
+      const std::vector<std::shared_ptr<const geometry::Shape>> &body_shapes,
+      dealii::Triangulation<dim>                                &tria)
       : moving_mesh(mesh, parameters)
       , tria(tria)
     {
-      if (particles.shape == ParticleParameters::Shape::disk)
-        // a 2D point (x, y) is the point (x, y, 0) of the 3D shapes: the
-        // disk is a cylinder along z whose caps are far from that plane
-        shape = std::make_unique<geometry::Cylinder>(particles.radius,
-                                                     1e3 * particles.radius);
-      else if (particles.shape == ParticleParameters::Shape::cylinder)
+      for (const auto &shape : body_shapes)
         {
-          // A cylinder at least as long as the domain along its axis (z)
-          // reaches through it, as in the 3D oscillating-cylinder slab: its
-          // caps lie on the end walls or outside, and the mesh must see only
-          // its lateral surface. With the caps in the distance field, a
-          // vertex of an end wall inside the disk lies on the body's surface
-          // (a cap) already and is never projected onto the lateral one: in
-          // a short piece of the slab 12 vertices of each end wall came to
-          // lie on the lateral surface against 18 of the middle layer, 16 on
-          // every layer without the caps
-          // (tests/fbm/cylinder_adapted_mesh.cc).
-          const auto [lower, upper]
-            = core::global_bounding_box(tria, tria.get_communicator());
-          const double span            = upper[dim - 1] - lower[dim - 1];
-          const bool   reaches_through = particles.length >= span * (1. - 1e-9);
-          shape                        = std::make_unique<geometry::Cylinder>(
-            particles.radius,
-            reaches_through ? 1e3 * (span + particles.radius) :
-                                                     0.5 * particles.length);
+          shapes.push_back(shape_seen_by_mesh(shape, tria));
+          rotation_invariant.push_back(is_rotation_invariant(*shape, dim));
         }
-      else
-        shape = std::make_unique<geometry::Sphere>(particles.radius);
     }
 
 
@@ -53,12 +67,12 @@ namespace particulate {
     template <int dim>
     deformation::ShapeDistanceField<dim>
     BodyAdaptedMesh<dim>::distance_field(
-      const std::vector<Eigen::Vector3d> &centres) const
+      const std::vector<geometry::Pose> &at) const
     {
+      AssertDimension(at.size(), shapes.size());
       std::vector<geometry::PlacedShape> bodies;
-      for (const auto &c : centres)
-        bodies.push_back(
-          {shape.get(), geometry::Pose(Eigen::Matrix3d::Identity(), c)});
+      for (unsigned int b = 0; b < shapes.size(); ++b)
+        bodies.push_back({shapes[b].get(), at[b]});
       return deformation::ShapeDistanceField<dim>(std::move(bodies));
     }
 
@@ -66,10 +80,10 @@ namespace particulate {
 
     template <int dim>
     deformation::DeformationReport
-    BodyAdaptedMesh<dim>::adapt(const std::vector<Eigen::Vector3d> &centres_)
+    BodyAdaptedMesh<dim>::adapt(const std::vector<geometry::Pose> &now)
     {
-      const auto report = moving_mesh.adapt(distance_field(centres_));
-      centres           = centres_;
+      const auto report = moving_mesh.adapt(distance_field(now));
+      poses             = now;
       moving_mesh.copy_vertices_to(tria);
       return report;
     }
@@ -77,34 +91,55 @@ namespace particulate {
 
 
     template <int dim>
-    deformation::DeformationReport
-    BodyAdaptedMesh<dim>::follow(const std::vector<Eigen::Vector3d> &now,
-                                 fluid::NavierStokes<dim>           &flow,
-                                 const double                        time_step)
+    dealii::Tensor<1, dim>
+    BodyAdaptedMesh<dim>::carried_displacement(
+      const dealii::Point<dim>          &x,
+      const std::vector<geometry::Pose> &now) const
     {
-      AssertDimension(now.size(), centres.size());
-      // a point moves with the particle whose centre was nearest
-      const auto displacement = [&](const dealii::Point<dim> &x) {
-        unsigned int nearest  = 0;
-        double       smallest = std::numeric_limits<double>::max();
-        for (unsigned int b = 0; b < centres.size(); ++b)
-          {
-            double r2 = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              r2 += (x[d] - centres[b][d]) * (x[d] - centres[b][d]);
-            if (r2 < smallest)
-              {
-                smallest = r2;
-                nearest  = b;
-              }
-          }
-        dealii::Tensor<1, dim> shift;
-        for (unsigned int d = 0; d < dim; ++d)
-          shift[d] = now[nearest][d] - centres[nearest][d];
-        return shift;
-      };
-      const auto report = moving_mesh.follow(distance_field(now), displacement);
-      centres           = now;
+      unsigned int nearest  = 0;
+      double       smallest = std::numeric_limits<double>::max();
+      for (unsigned int b = 0; b < poses.size(); ++b)
+        {
+          double r2 = 0.;
+          for (unsigned int d = 0; d < dim; ++d)
+            r2 += (x[d] - poses[b].translation()[d])
+                  * (x[d] - poses[b].translation()[d]);
+          if (r2 < smallest)
+            {
+              smallest = r2;
+              nearest  = b;
+            }
+        }
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = x[d];
+      const Eigen::Vector3d move
+        = rotation_invariant[nearest] ?
+            Eigen::Vector3d(now[nearest].translation()
+                            - poses[nearest].translation()) :
+            Eigen::Vector3d(now[nearest].to_world(poses[nearest].to_body(p))
+                            - p);
+      dealii::Tensor<1, dim> shift;
+      for (unsigned int d = 0; d < dim; ++d)
+        shift[d] = move[d];
+      return shift;
+    }
+
+
+
+    template <int dim>
+    deformation::DeformationReport
+    BodyAdaptedMesh<dim>::follow(const std::vector<geometry::Pose> &now,
+                                 fluid::NavierStokes<dim>          &flow,
+                                 const double                       time_step)
+    {
+      AssertDimension(now.size(), poses.size());
+      const auto report
+        = moving_mesh.follow(distance_field(now),
+                             [&](const dealii::Point<dim> &x) {
+                               return carried_displacement(x, now);
+                             });
+      poses                    = now;
       const auto move_vertices = [&]() { moving_mesh.copy_vertices_to(tria); };
       // A mesh carried with the bodies moves little per step, and the ALE
       // term accounts for it; a fresh adaptation among carried meshes is a
@@ -123,10 +158,16 @@ namespace particulate {
     BodyAdaptedMesh<dim>::save(std::ostream &out) const
     {
       moving_mesh.save(out);
-      std::vector<double> xyz;
-      for (const auto &c : centres)
-        xyz.insert(xyz.end(), c.data(), c.data() + 3);
-      core::write_binary_vector(out, xyz);
+      std::vector<double> placement;
+      for (const auto &pose : poses)
+        {
+          const Eigen::Matrix3d &R = pose.rotation();
+          placement.insert(placement.end(), R.data(), R.data() + 9);
+          placement.insert(placement.end(),
+                           pose.translation().data(),
+                           pose.translation().data() + 3);
+        }
+      core::write_binary_vector(out, placement);
     }
 
 
@@ -136,11 +177,19 @@ namespace particulate {
     BodyAdaptedMesh<dim>::load(std::istream &in)
     {
       moving_mesh.load(in);
-      const auto xyz = core::read_binary_vector<double>(in);
-      centres.resize(xyz.size() / 3);
-      for (unsigned int b = 0; b < centres.size(); ++b)
-        centres[b]
-          = Eigen::Vector3d(xyz[3 * b], xyz[3 * b + 1], xyz[3 * b + 2]);
+      const auto placement = core::read_binary_vector<double>(in);
+      AssertThrow(placement.size() == 12 * shapes.size(),
+                  dealii::ExcMessage(
+                    "The checkpoint's adapted mesh holds "
+                    + std::to_string(placement.size() / 12)
+                    + " bodies, the case " + std::to_string(shapes.size())
+                    + ": restart with the case file that wrote it."));
+      poses.clear();
+      for (unsigned int b = 0; b < shapes.size(); ++b)
+        poses.emplace_back(Eigen::Matrix3d(Eigen::Map<const Eigen::Matrix3d>(
+                             &placement[12 * b])),
+                           Eigen::Vector3d(Eigen::Map<const Eigen::Vector3d>(
+                             &placement[12 * b + 9])));
       moving_mesh.copy_vertices_to(tria);
     }
 

@@ -1,5 +1,8 @@
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/geometry/bounding_box.h>
+#include <particulate/geometry/cylinder.h>
+#include <particulate/geometry/pose.h>
+#include <particulate/geometry/sphere.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
@@ -206,18 +209,13 @@ namespace particulate {
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           const rigid::RigidBody &body = *bodies[b].body;
-          // the ball of the body, enlarged by the marking's reach and
-          // slightly against rounding; in 2D the nodes lie in the plane z = 0
-          const double reach = fraction * largest_half_spacing;
-          const double r     = (bodies[b].radius + reach) * (1. + 1e-9) + 1e-14;
-          geometry::BoundingBox box;
-          box.lower = body.position - Eigen::Vector3d::Constant(r);
-          box.upper = body.position + Eigen::Vector3d::Constant(r);
-          if (dim == 2)
-            {
-              box.lower[2] = -r;
-              box.upper[2] = r;
-            }
+          // the box of the body, enlarged by the marking's reach and
+          // slightly against rounding
+          const double                reach = fraction * largest_half_spacing;
+          const geometry::BoundingBox box
+            = geometry::Pose(body.orientation, body.position)
+                .to_world(body.shape().bounding_box())
+                .enlarged(reach + 1e-9 * body.bounding_radius() + 1e-14);
           // A node on the surface belongs to the body, whichever side
           // rounding puts it: a mesh adapted to the body carries vertices
           // (and, in 3D, the midpoints of edges along a cylinder's axis)
@@ -237,6 +235,24 @@ namespace particulate {
 
 
     template <int dim>
+    double
+    FictitiousBoundary<dim>::engine_sphere_radius(const geometry::Shape &shape)
+    {
+      if (shape.kind() == geometry::ShapeKind::sphere)
+        return static_cast<const geometry::Sphere &>(shape).radius();
+      if (dim == 2 && shape.kind() == geometry::ShapeKind::cylinder)
+        return static_cast<const geometry::Cylinder &>(shape).radius();
+      throw std::invalid_argument(
+        "fbm::FictitiousBoundary: the cuda/ containment engine takes "
+        "spheres (and disks in 2D) only, not a "
+        + shape.name()
+        + "; use 'Containment backend = cpu' in subsection 'Particles' for "
+          "other shapes.");
+    }
+
+
+
+    template <int dim>
     void
     FictitiousBoundary<dim>::classify_with_engine(
       const std::vector<Body> &bodies)
@@ -244,18 +260,11 @@ namespace particulate {
       std::vector<cuda::BodyInstance> instances(bodies.size());
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const rigid::RigidBody &body = *bodies[b].body;
-          const auto              type = body.shape().type();
-          if (!(type == rigid::ShapeType::sphere
-                || (dim == 2 && type == rigid::ShapeType::cylinder)))
-            throw std::invalid_argument(
-              "fbm::FictitiousBoundary: the cuda/ containment engine takes "
-              "spheres (and disks in 2D) only; use 'Containment backend = "
-              "cpu' in subsection 'Particles' for other shapes.");
+          const rigid::RigidBody &body   = *bodies[b].body;
+          const double            radius = engine_sphere_radius(body.shape());
           // one uploaded one-sphere set per radius, centred at the body
           // origin
-          const double radius = bodies[b].radius;
-          auto         shape
+          auto shape
             = std::find_if(engine_shapes.begin(),
                            engine_shapes.end(),
                            [&](const auto &s) { return s.first == radius; });

@@ -5,13 +5,12 @@
 #include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
+#include <particulate/fbm/particle_shape.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
 #include <particulate/fluid/flow_diagnostics.h>
 #include <particulate/fluid/flow_output.h>
 #include <particulate/fluid/navier_stokes.h>
-#include <particulate/rigid/cylinder.h>
-#include <particulate/rigid/half_space.h>
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/half_space.h>
 #include <particulate/rigid/vtp_writer.h>
 #include <particulate/rigid/world.h>
 
@@ -45,25 +44,6 @@ namespace particulate {
         return Utilities::MPI::min(h, comm);
       }
 
-      /** The rigid engine's shape of every particle. The 2D disk is a
-       *  cylinder along z of unit length (the engine is 3D; its volume and
-       *  inertia are then those per unit depth). */
-      std::shared_ptr<const rigid::Shape>
-      particle_shape(const ParticleParameters &p)
-      {
-        switch (p.shape)
-          {
-            case ParticleParameters::Shape::disk:
-              return std::make_shared<rigid::Cylinder>(p.radius, 0.5);
-            case ParticleParameters::Shape::cylinder:
-              return std::make_shared<rigid::Cylinder>(p.radius,
-                                                       0.5 * p.length);
-            case ParticleParameters::Shape::sphere:
-              break;
-          }
-        return std::make_shared<rigid::Sphere>(p.radius);
-      }
-
       /** The marking named by 'Covered nodes' (a validated selection). */
       template <int dim>
       typename FictitiousBoundary<dim>::Marking
@@ -78,8 +58,6 @@ namespace particulate {
       }
     } // namespace
 
-
-
     template <int dim>
     ParticulateFlowSimulation<dim>::ParticulateFlowSimulation(
       const ParticulateFlowParameters &parameters,
@@ -89,8 +67,6 @@ namespace particulate {
       , parameter_file(parameter_file)
       , communicator(comm)
     {}
-
-
 
     template <int dim>
     ParticulateFlowSummary
@@ -186,6 +162,13 @@ namespace particulate {
           c = prescribed_state(c, 0.).first;
 
       // r-adaptivity: the mesh resolves the particles where they start
+      // the one shape every body's description produces: the rigid body,
+      // the interface and the mesh deformation all read it
+      const std::shared_ptr<const geometry::Shape> shape
+        = make_particle_shape(particle_p);
+      std::vector<geometry::Pose> initial_poses;
+      for (const auto &c : initial_centres)
+        initial_poses.emplace_back(Eigen::Matrix3d::Identity(), c);
       std::unique_ptr<BodyAdaptedMesh<dim>> adapted_mesh;
       deformation::DeformationReport        initial_report;
       const bool                            deforming
@@ -197,12 +180,14 @@ namespace particulate {
       if (deforming)
         {
           TimerOutput::Scope scope(timer, "mesh deformation");
-          adapted_mesh
-            = std::make_unique<BodyAdaptedMesh<dim>>(flow_p.mesh,
-                                                     parameters.deformation,
-                                                     particle_p,
-                                                     tria);
-          initial_report     = adapted_mesh->adapt(initial_centres);
+          adapted_mesh = std::make_unique<BodyAdaptedMesh<dim>>(
+            flow_p.mesh,
+            parameters.deformation,
+            std::vector<std::shared_ptr<const geometry::Shape>>(
+              initial_poses.size(),
+              shape),
+            tria);
+          initial_report     = adapted_mesh->adapt(initial_poses);
           const auto &report = initial_report;
           pcout << "Mesh deformation: " << adapted_mesh->mesh().method_name()
                 << ", min scaled Jacobian "
@@ -219,8 +204,6 @@ namespace particulate {
       const double rho_f = flow_p.fluid.properties.density;
       const double rho_p = particle_p.density;
       const bool   free = particle_p.motion == ParticleParameters::Motion::free;
-      const std::shared_ptr<const rigid::Shape> shape
-        = particle_shape(particle_p);
       const double volume = shape->volume();
       // Added-mass correction: the engine integrates the particle with mass
       // m + m_a (density rho_p + C rho_f); the force gets + m_a a_old.
@@ -270,14 +253,15 @@ namespace particulate {
           n[d]              = 1.;
           // half-space {n.p <= offset}; n points into the fluid
           if (particle_p.walls[2 * d])
-            world.add_body(std::make_shared<rigid::HalfSpace>(n, box_lower[d]),
+            world.add_body(std::make_shared<geometry::HalfSpace>(n,
+                                                                 box_lower[d]),
                            wall_material_id,
                            Eigen::Vector3d::Zero(),
                            Eigen::Quaterniond::Identity(),
                            true);
           if (particle_p.walls[2 * d + 1])
-            world.add_body(std::make_shared<rigid::HalfSpace>(-n,
-                                                              -box_upper[d]),
+            world.add_body(std::make_shared<geometry::HalfSpace>(-n,
+                                                                 -box_upper[d]),
                            wall_material_id,
                            Eigen::Vector3d::Zero(),
                            Eigen::Quaterniond::Identity(),
@@ -295,14 +279,9 @@ namespace particulate {
               && particle_p.shape != ParticleParameters::Shape::cylinder
               && cuda::ContainmentEngine::cuda_device_available()))
         interface.use_containment_engine(cuda::Backend::cuda);
-      // the ball around the centre that holds the body (the engine's shape
-      // knows it; a 3D cylinder's reaches its rims); a 2D disk's nodes lie
-      // in its mid-plane, where its radius is enough
-      const double body_ball_radius
-        = dim == 3 ? shape->bounding_radius() : particle_p.radius;
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
       for (const auto id : ids)
-        interface_bodies.push_back({&world.body(id), body_ball_radius});
+        interface_bodies.push_back({&world.body(id)});
 
       pcout << "Mesh: " << tria.n_global_active_cells() << " cells, "
             << flow.n_dofs() << " DoFs (" << flow.n_velocity_dofs()
@@ -495,9 +474,8 @@ namespace particulate {
       // particle is an immovable body of infinite inertia in the engine
       const auto true_inertia_world = [&](const rigid::RigidBody &b) {
         const Eigen::Matrix3d R = b.rotation();
-        return Eigen::Matrix3d(
-          R * (rho_p * b.shape().unit_density_inertia()).asDiagonal()
-          * R.transpose());
+        return Eigen::Matrix3d(R * (rho_p * b.shape().unit_inertia())
+                               * R.transpose());
       };
       const auto particle_energy = [&](const rigid::RigidBody &b) {
         return 0.5 * rho_p * volume * b.linear_velocity.squaredNorm()
@@ -694,11 +672,12 @@ namespace particulate {
           {
             deformation::DeformationReport report;
             {
-              TimerOutput::Scope           scope(timer, "mesh deformation");
-              std::vector<Eigen::Vector3d> centres;
+              TimerOutput::Scope          scope(timer, "mesh deformation");
+              std::vector<geometry::Pose> poses;
               for (const auto id : ids)
-                centres.push_back(world.body(id).position);
-              report = adapted_mesh->follow(centres, flow, k);
+                poses.emplace_back(world.body(id).orientation,
+                                   world.body(id).position);
+              report = adapted_mesh->follow(poses, flow, k);
             }
             record_mesh(t_new, report);
             TimerOutput::Scope scope(timer, "fbm: containment and constraints");

@@ -1,4 +1,4 @@
-#include <particulate/rigid/box.h>
+#include <particulate/geometry/box.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,10 +53,10 @@ namespace particulate::rigid::detail {
           const double               margin,
           std::vector<ContactPoint> &out)
   {
-    const auto           &sa = static_cast<const Box &>(A.shape());
-    const auto           &sb = static_cast<const Box &>(B.shape());
+    const auto           &sa = static_cast<const geometry::Box &>(A.shape());
+    const auto           &sb = static_cast<const geometry::Box &>(B.shape());
     const Eigen::Matrix3d Ra = A.rotation(), Rb = B.rotation();
-    const Eigen::Vector3d ea = sa.half_extents, eb = sb.half_extents;
+    const Eigen::Vector3d ea = sa.half_extents(), eb = sb.half_extents();
     const Eigen::Vector3d t = B.position - A.position;
 
     // Separating-axis test over the 15 axes; keep the axis with the largest

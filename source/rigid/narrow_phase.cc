@@ -1,9 +1,9 @@
-#include <particulate/rigid/box.h>
-#include <particulate/rigid/capsule.h>
+#include <particulate/geometry/box.h>
+#include <particulate/geometry/capsule.h>
+#include <particulate/geometry/half_space.h>
+#include <particulate/geometry/sphere.h>
 #include <particulate/rigid/gjk_epa.h>
-#include <particulate/rigid/half_space.h>
 #include <particulate/rigid/narrow_phase.h>
-#include <particulate/rigid/sphere.h>
 
 #include <Eigen/Geometry>
 
@@ -17,13 +17,20 @@ namespace particulate::rigid {
     using detail::make_point;
     using Points = std::vector<ContactPoint>;
 
+    /** Radius of a sphere body. */
+    double
+    sphere_radius(const RigidBody &S)
+    {
+      return static_cast<const geometry::Sphere &>(S.shape()).radius();
+    }
+
     /** World plane n . x = c of a half-space body. */
     void
     world_plane(const RigidBody &H, Eigen::Vector3d &n, double &c)
     {
-      const auto &hs = static_cast<const HalfSpace &>(H.shape());
-      n              = H.orientation * hs.normal;
-      c              = hs.offset + n.dot(H.position);
+      const auto &hs = static_cast<const geometry::HalfSpace &>(H.shape());
+      n              = H.orientation * hs.normal();
+      c              = hs.offset() + n.dot(H.position);
     }
 
     /** Sphere (centre ca, radius ra, body A) against sphere (cb, rb). */
@@ -71,9 +78,9 @@ namespace particulate::rigid {
                const double     margin,
                Points          &out)
     {
-      const double          r = static_cast<const Sphere &>(A.shape()).radius;
+      const double          r = sphere_radius(A);
       const Eigen::Vector3d e
-        = static_cast<const Box &>(B.shape()).half_extents;
+        = static_cast<const geometry::Box &>(B.shape()).half_extents();
       const Eigen::Vector3d c = B.to_body(A.position);
       const Eigen::Vector3d q = c.cwiseMax(-e).cwiseMin(e);
       Eigen::Vector3d       nb; // box -> sphere, body frame of B
@@ -111,10 +118,10 @@ namespace particulate::rigid {
                     Eigen::Vector3d &q,
                     double          &r)
     {
-      const auto &cs = static_cast<const Capsule &>(C.shape());
-      p              = C.to_world(Eigen::Vector3d(0., 0., -cs.half_length));
-      q              = C.to_world(Eigen::Vector3d(0., 0., cs.half_length));
-      r              = cs.radius;
+      const auto &cs = static_cast<const geometry::Capsule &>(C.shape());
+      p              = C.to_world(Eigen::Vector3d(0., 0., -cs.half_length()));
+      q              = C.to_world(Eigen::Vector3d(0., 0., cs.half_length()));
+      r              = cs.radius();
     }
 
     void
@@ -133,7 +140,7 @@ namespace particulate::rigid {
                                   1.);
       sphere_sphere(A,
                     A.position,
-                    static_cast<const Sphere &>(A.shape()).radius,
+                    sphere_radius(A),
                     p + t * pq,
                     rb,
                     margin,
@@ -150,7 +157,7 @@ namespace particulate::rigid {
       double          off;
       world_plane(H, n, off);
       const Eigen::Vector3d e
-        = static_cast<const Box &>(A.shape()).half_extents;
+        = static_cast<const geometry::Box &>(A.shape()).half_extents();
       Points pts;
       for (int i = -1; i <= 1; i += 2)
         for (int j = -1; j <= 1; j += 2)
@@ -279,13 +286,14 @@ namespace particulate::rigid {
       const Eigen::Matrix3d RQ = Q.rotation();
       for (const Eigen::Vector3d &pb : P.shape().surface_points())
         {
-          const Eigen::Vector3d p   = P.to_world(pb);
-          const Eigen::Vector3d pq  = Q.to_body(p);
-          const double          gap = Q.shape().signed_distance(pq);
+          const Eigen::Vector3d p  = P.to_world(pb);
+          const Eigen::Vector3d pq = Q.to_body(p);
+          Eigen::Vector3d       gq;
+          const double          gap = Q.shape().signed_distance(pq, &gq);
           if (gap > margin)
             continue;
-          const Eigen::Vector3d g  = RQ * Q.shape().gradient(pq); // out of Q
-          const Eigen::Vector3d on = p - gap * g;                 // on Q
+          const Eigen::Vector3d g  = RQ * gq;     // out of Q
+          const Eigen::Vector3d on = p - gap * g; // on Q
           // Normal from P to Q is -g.
           if (!flip)
             out.push_back(make_point(first, p, on, -g, gap));
@@ -305,17 +313,17 @@ namespace particulate::rigid {
   {
     Points &out = edge.manifold.points;
     out.clear();
-    const bool       swap = a.shape().type() > b.shape().type();
+    const bool       swap = a.shape().kind() > b.shape().kind();
     const RigidBody &A = swap ? b : a, &B = swap ? a : b;
-    const ShapeType  ta = A.shape().type(), tb = B.shape().type();
-    using T = ShapeType;
+    using T    = geometry::ShapeKind;
+    const T ta = A.shape().kind(), tb = B.shape().kind();
 
     if (ta == T::sphere && tb == T::sphere)
       sphere_sphere(A,
                     A.position,
-                    static_cast<const Sphere &>(A.shape()).radius,
+                    sphere_radius(A),
                     B.position,
-                    static_cast<const Sphere &>(B.shape()).radius,
+                    sphere_radius(B),
                     margin,
                     out);
     else if (ta == T::sphere && tb == T::box)
@@ -329,13 +337,7 @@ namespace particulate::rigid {
         Eigen::Vector3d n;
         double          off;
         world_plane(B, n, off);
-        sphere_plane(A,
-                     A.position,
-                     static_cast<const Sphere &>(A.shape()).radius,
-                     n,
-                     off,
-                     margin,
-                     out);
+        sphere_plane(A, A.position, sphere_radius(A), n, off, margin, out);
       }
     else if (ta == T::box && tb == T::box)
       detail::box_box(A, B, margin, out);
@@ -343,17 +345,18 @@ namespace particulate::rigid {
       box_plane(A, B, margin, out);
     else if (ta == T::capsule && tb == T::half_space)
       capsule_plane(A, B, margin, out);
-    else if (ta == T::signed_distance || tb == T::signed_distance)
+    else if (ta == T::general || tb == T::general)
       {
         if (ta == T::sphere)
           {
             // Exact for a sphere: its centre against the distance field.
-            const double r = static_cast<const Sphere &>(A.shape()).radius;
-            const Eigen::Vector3d pq  = B.to_body(A.position);
-            const double          gap = B.shape().signed_distance(pq) - r;
+            const double          r  = sphere_radius(A);
+            const Eigen::Vector3d pq = B.to_body(A.position);
+            Eigen::Vector3d       gb;
+            const double          gap = B.shape().signed_distance(pq, &gb) - r;
             if (gap <= margin)
               {
-                const Eigen::Vector3d g = B.rotation() * B.shape().gradient(pq);
+                const Eigen::Vector3d g = B.rotation() * gb;
                 out.push_back(make_point(A,
                                          A.position - r * g,
                                          A.position - (r + gap) * g,

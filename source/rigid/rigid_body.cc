@@ -2,14 +2,43 @@
 
 #include <Eigen/LU>
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
 namespace particulate::rigid {
-  RigidBody::RigidBody(std::shared_ptr<const Shape> shape,
-                       const unsigned int           material,
-                       const double                 density,
-                       const bool                   fixed)
+  namespace {
+    /**
+     * The principal moments of the shape's unit-density inertia. The body
+     * frame of a rigid body is the principal frame (centroid at the origin,
+     * principal axes along the body axes); a shape given in another frame
+     * is refused with what to do.
+     */
+    Eigen::Vector3d
+    principal_unit_inertia(const geometry::Shape &shape)
+    {
+      const Eigen::Matrix3d I     = shape.unit_inertia();
+      const double          scale = std::cbrt(shape.volume());
+      const double          size  = I.diagonal().maxCoeff();
+      const Eigen::Matrix3d off
+        = I - Eigen::Matrix3d(I.diagonal().asDiagonal());
+      if (!(shape.centroid().norm() <= 1e-9 * scale)
+          || !(off.cwiseAbs().maxCoeff() <= 1e-9 * size)
+          || !(I.diagonal().minCoeff() > 0.))
+        throw std::invalid_argument(
+          "rigid::RigidBody: the " + shape.name()
+          + " is not given in its principal frame: a dynamic body's shape "
+            "must have its centroid at the origin and its principal axes of "
+            "inertia along the body axes (move the surface mesh to the frame "
+            "that geometry::MassProperties::principal_frame() gives).");
+      return I.diagonal();
+    }
+  } // namespace
+
+  RigidBody::RigidBody(std::shared_ptr<const geometry::Shape> shape,
+                       const unsigned int                     material,
+                       const double                           density,
+                       const bool                             fixed)
     : shape_(std::move(shape))
     , material_(material)
     , fixed_(fixed)
@@ -32,7 +61,7 @@ namespace particulate::rigid {
             "density (kg/m^3); check the material.");
         const double m   = density * shape_->volume();
         inverse_mass_    = 1. / m;
-        inertia_         = density * shape_->unit_density_inertia();
+        inertia_         = density * principal_unit_inertia(*shape_);
         inverse_inertia_ = inertia_.cwiseInverse();
       }
   }

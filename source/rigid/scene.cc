@@ -1,10 +1,10 @@
-#include <particulate/rigid/box.h>
-#include <particulate/rigid/capsule.h>
-#include <particulate/rigid/cylinder.h>
-#include <particulate/rigid/ellipsoid.h>
-#include <particulate/rigid/half_space.h>
+#include <particulate/geometry/box.h>
+#include <particulate/geometry/capsule.h>
+#include <particulate/geometry/cylinder.h>
+#include <particulate/geometry/ellipsoid.h>
+#include <particulate/geometry/half_space.h>
+#include <particulate/geometry/sphere.h>
 #include <particulate/rigid/scene.h>
-#include <particulate/rigid/sphere.h>
 
 #include <cmath>
 #include <random>
@@ -12,24 +12,24 @@
 #include <string>
 
 namespace particulate::rigid {
-  std::shared_ptr<const Shape>
+  std::shared_ptr<const geometry::Shape>
   ShapeDescription::create() const
   {
-    switch (type)
+    switch (kind)
       {
-        case ShapeType::sphere:
-          return std::make_shared<Sphere>(radius);
-        case ShapeType::box:
-          return std::make_shared<Box>(extents);
-        case ShapeType::capsule:
-          return std::make_shared<Capsule>(radius, half_length);
-        case ShapeType::cylinder:
-          return std::make_shared<Cylinder>(radius, half_length);
-        case ShapeType::ellipsoid:
-          return std::make_shared<Ellipsoid>(extents);
-        case ShapeType::half_space:
-          return std::make_shared<HalfSpace>(normal, offset);
-        case ShapeType::signed_distance:
+        case geometry::ShapeKind::sphere:
+          return std::make_shared<geometry::Sphere>(radius);
+        case geometry::ShapeKind::box:
+          return std::make_shared<geometry::Box>(extents);
+        case geometry::ShapeKind::capsule:
+          return std::make_shared<geometry::Capsule>(radius, half_length);
+        case geometry::ShapeKind::cylinder:
+          return std::make_shared<geometry::Cylinder>(radius, half_length);
+        case geometry::ShapeKind::ellipsoid:
+          return std::make_shared<geometry::Ellipsoid>(extents);
+        case geometry::ShapeKind::half_space:
+          return std::make_shared<geometry::HalfSpace>(normal, offset);
+        case geometry::ShapeKind::general:
           if (!custom)
             throw std::invalid_argument(
               "rigid::ShapeDescription: a signed-distance (mesh) shape needs "
@@ -64,7 +64,7 @@ namespace particulate::rigid {
     for (int k = 0; k < 5; ++k)
       {
         BodyDescription w;
-        w.shape.type   = ShapeType::half_space;
+        w.shape.kind   = geometry::ShapeKind::half_space;
         w.shape.normal = normals[k];
         w.shape.offset = offsets[k];
         w.material     = material;
@@ -86,7 +86,7 @@ namespace particulate::rigid {
               radius_min + (radius_max - radius_min) * u(rng) :
               radius_min * std::pow(radius_max / radius_min, u(rng));
         BodyDescription b;
-        b.shape.type   = ShapeType::sphere;
+        b.shape.kind   = geometry::ShapeKind::sphere;
         b.shape.radius = r;
         b.material     = material;
         b.position

@@ -1,4 +1,4 @@
-#include <particulate/rigid/half_space.h>
+#include <particulate/geometry/half_space.h>
 #include <particulate/rigid/sphere_dem.h>
 #include <particulate/rigid/sphere_neighbour_search.h>
 #include <particulate/rigid/world.h>
@@ -348,10 +348,11 @@ namespace particulate::rigid {
   bool
   SphereDem::can_handle(const RigidBody &body)
   {
-    const ShapeType type = body.shape().type();
+    const geometry::ShapeKind type = body.shape().kind();
     if (body.is_fixed())
-      return type == ShapeType::sphere || type == ShapeType::half_space;
-    return type == ShapeType::sphere && !body.rotation_locked();
+      return type == geometry::ShapeKind::sphere
+             || type == geometry::ShapeKind::half_space;
+    return type == geometry::ShapeKind::sphere && !body.rotation_locked();
   }
 
 
@@ -380,7 +381,7 @@ namespace particulate::rigid {
         const RigidBody       &b = bodies[id];
         const Eigen::Vector3d &at
           = saved_list ? list_positions[id] : b.position;
-        if (b.shape().type() == ShapeType::half_space)
+        if (b.shape().kind() == geometry::ShapeKind::half_space)
           {
             wall_id_.push_back(id);
             wall_material_.push_back(b.material());
@@ -432,13 +433,13 @@ namespace particulate::rigid {
   {
     for (std::size_t w = 0; w < wall_id_.size(); ++w)
       {
-        const RigidBody &b  = bodies[wall_id_[w]];
-        const auto      &hs = static_cast<const HalfSpace &>(b.shape());
-        wall_normal_[w]     = b.orientation * hs.normal;
-        wall_offset_[w]     = hs.offset + wall_normal_[w].dot(b.position);
-        wall_position_[w]   = b.position;
-        wall_v_[w]          = b.linear_velocity;
-        wall_w_[w]          = b.angular_velocity;
+        const RigidBody &b = bodies[wall_id_[w]];
+        const auto &hs    = static_cast<const geometry::HalfSpace &>(b.shape());
+        wall_normal_[w]   = b.orientation * hs.normal();
+        wall_offset_[w]   = hs.offset() + wall_normal_[w].dot(b.position);
+        wall_position_[w] = b.position;
+        wall_v_[w]        = b.linear_velocity;
+        wall_w_[w]        = b.angular_velocity;
       }
   }
 

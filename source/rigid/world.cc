@@ -1,5 +1,5 @@
+#include <particulate/geometry/half_space.h>
 #include <particulate/rigid/dem_solver.h>
-#include <particulate/rigid/half_space.h>
 #include <particulate/rigid/narrow_phase.h>
 #include <particulate/rigid/newton_euler_integrator.h>
 #include <particulate/rigid/world.h>
@@ -92,11 +92,11 @@ namespace particulate::rigid {
 
 
   BodyId
-  World::add_body(std::shared_ptr<const Shape> shape,
-                  const unsigned int           material,
-                  const Eigen::Vector3d       &position,
-                  const Eigen::Quaterniond    &orientation,
-                  const bool                   fixed)
+  World::add_body(std::shared_ptr<const geometry::Shape> shape,
+                  const unsigned int                     material,
+                  const Eigen::Vector3d                 &position,
+                  const Eigen::Quaterniond              &orientation,
+                  const bool                             fixed)
   {
     if (material >= materials_.size())
       throw std::invalid_argument(
@@ -308,13 +308,14 @@ namespace particulate::rigid {
         const double r     = b.bounding_radius();
         if (!std::isfinite(r))
           {
-            if (b.shape().type() != ShapeType::half_space)
+            if (b.shape().kind() != geometry::ShapeKind::half_space)
               throw std::logic_error(
                 "rigid::World: unbounded shape other than a half-space");
-            const auto &hs = static_cast<const HalfSpace &>(b.shape());
+            const auto &hs
+              = static_cast<const geometry::HalfSpace &>(b.shape());
             p.radius       = r;
-            p.plane_normal = b.orientation * hs.normal;
-            p.plane_offset = hs.offset + p.plane_normal.dot(b.position)
+            p.plane_normal = b.orientation * hs.normal();
+            p.plane_offset = hs.offset() + p.plane_normal.dot(b.position)
                              + 0.5 * (margin_ + parameters_.contact_offset)
                              + horizon * b.linear_velocity.norm() + skin_half;
             continue;
@@ -362,8 +363,8 @@ namespace particulate::rigid {
                          + b.angular_velocity.norm() * rb
                          + h * parameters_.gravity.norm());
           }
-        if (a.shape().type() == ShapeType::sphere
-            && b.shape().type() == ShapeType::sphere)
+        if (a.shape().kind() == geometry::ShapeKind::sphere
+            && b.shape().kind() == geometry::ShapeKind::sphere)
           {
             // Fast path for the most common pair (granular flows): update
             // the single contact point in place, keeping its cache.

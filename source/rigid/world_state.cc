@@ -60,7 +60,7 @@ namespace particulate::rigid {
     put<std::uint64_t>(out, bodies_.size());
     for (const RigidBody &b : bodies_)
       {
-        put<int>(out, static_cast<int>(b.shape().type()));
+        put<int>(out, static_cast<int>(b.shape().kind()));
         put_vector(out, b.position);
         for (const double q : {b.orientation.w(),
                                b.orientation.x(),
@@ -134,7 +134,7 @@ namespace particulate::rigid {
     bodies_written_ = true;
     for (RigidBody &b : bodies_)
       {
-        if (get<int>(in) != static_cast<int>(b.shape().type()))
+        if (get<int>(in) != static_cast<int>(b.shape().kind()))
           throw std::runtime_error(
             "the saved bodies have other shapes than these");
         b.position     = get_vector(in);

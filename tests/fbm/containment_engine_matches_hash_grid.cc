@@ -9,8 +9,8 @@
 
 #include <particulate/core/mesh.h>
 #include <particulate/fbm/fictitious_boundary.h>
-#include <particulate/rigid/cylinder.h>
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/cylinder.h>
+#include <particulate/geometry/sphere.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
@@ -47,15 +47,15 @@ namespace {
     std::vector<double>       radii;
     for (unsigned int b = 0; b < 12; ++b)
       {
-        const double                        r = radius(random);
-        const Eigen::Vector3d               centre(x(random),
+        const double                           r = radius(random);
+        const Eigen::Vector3d                  centre(x(random),
                                      y(random),
                                      dim == 3 ? y(random) : 0.);
-        std::shared_ptr<const rigid::Shape> shape;
+        std::shared_ptr<const geometry::Shape> shape;
         if (dim == 3)
-          shape = std::make_shared<rigid::Sphere>(r);
+          shape = std::make_shared<geometry::Sphere>(r);
         else
-          shape = std::make_shared<rigid::Cylinder>(r, 0.5);
+          shape = std::make_shared<geometry::Cylinder>(r, 0.5);
         const Eigen::Quaterniond orientation(
           Eigen::AngleAxisd(angle(random),
                             dim == 3 ?
@@ -68,7 +68,7 @@ namespace {
     // pointers only once the world holds all bodies
     std::vector<typename fbm::FictitiousBoundary<dim>::Body> bodies;
     for (unsigned int b = 0; b < ids.size(); ++b)
-      bodies.push_back({&world.body(ids[b]), radii[b]});
+      bodies.push_back({&world.body(ids[b])});
 
     fbm::FictitiousBoundary<dim> grid_path(flow), engine_path(flow);
     grid_path.setup();
@@ -88,10 +88,10 @@ namespace {
           continue;
         // allowed only where a surface passes within float rounding
         bool near_surface = false;
-        for (const auto &body : bodies)
-          near_surface |= std::abs(body.body->signed_distance(
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          near_surface |= std::abs(bodies[b].body->signed_distance(
                             engine_path.node_position(i)))
-                          < 1e-6 * body.radius;
+                          < 1e-6 * radii[b];
         (near_surface ? unresolved : differ) += 1;
       }
     char what[200];

@@ -18,6 +18,7 @@
 
 #include <particulate/core/mesh.h>
 #include <particulate/fbm/body_adapted_mesh.h>
+#include <particulate/fbm/particle_shape.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
 
 #include <deal.II/distributed/fully_distributed_tria.h>
@@ -54,10 +55,11 @@ main(int argc, char **argv)
   core::create_mesh(parameters.flow.mesh, tria);
   fbm::BodyAdaptedMesh<3> mesh(parameters.flow.mesh,
                                parameters.deformation,
-                               parameters.particles,
+                               {fbm::make_particle_shape(parameters.particles)},
                                tria);
   const Eigen::Vector3d   centre = parameters.particles.positions.at(0);
-  const auto              report = mesh.adapt({centre});
+  const auto              report
+    = mesh.adapt({geometry::Pose(Eigen::Matrix3d::Identity(), centre)});
 
   // vertices on the lateral surface, per vertex layer z (one rank: the
   // whole mesh)

@@ -16,7 +16,7 @@
 #include <particulate/core/mesh.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
-#include <particulate/rigid/cylinder.h>
+#include <particulate/geometry/cylinder.h>
 #include <particulate/rigid/world.h>
 
 #include <deal.II/base/function.h>
@@ -165,13 +165,13 @@ main(int argc, char **argv)
       rigid::World world;
       const double radius = 0.061;
       const auto   id
-        = world.add_body(std::make_shared<rigid::Cylinder>(radius, 0.5),
+        = world.add_body(std::make_shared<geometry::Cylinder>(radius, 0.5),
                          world.add_material({}),
                          centre,
                          Eigen::Quaterniond::Identity(),
                          true);
       const std::vector<fbm::FictitiousBoundary<2>::Body> bodies
-        = {{&world.body(id), radius}};
+        = {{&world.body(id)}};
       fbm::FictitiousBoundary<2> interface(flow);
       interface.setup();
       interface.classify(bodies);

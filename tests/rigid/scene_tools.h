@@ -2,7 +2,7 @@
 #ifndef particulate_tests_rigid_scene_tools_h
 #define particulate_tests_rigid_scene_tools_h
 
-#include <particulate/rigid/half_space.h>
+#include <particulate/geometry/half_space.h>
 #include <particulate/rigid/world.h>
 
 #include <vector>
@@ -21,8 +21,8 @@ inline particulate::rigid::BodyId
 add_floor(particulate::rigid::World &w, const unsigned int material = 0)
 {
   return w.add_body(
-    std::make_shared<particulate::rigid::HalfSpace>(Eigen::Vector3d::UnitZ(),
-                                                    0.),
+    std::make_shared<particulate::geometry::HalfSpace>(Eigen::Vector3d::UnitZ(),
+                                                       0.),
     material,
     Eigen::Vector3d::Zero(),
     Eigen::Quaterniond::Identity(),

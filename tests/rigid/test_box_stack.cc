@@ -2,12 +2,13 @@
 // the LCP (projected Gauss-Seidel) and the sequential-impulse solvers: no
 // tipping (every box axis within 1 degree of vertical and every centre within
 // 1 % of the edge from the stack axis) and penetration below 1 % of the edge.
-#include <particulate/rigid/box.h>
+#include <particulate/geometry/box.h>
 
 #include "scene_tools.h"
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

@@ -9,13 +9,14 @@
 //    (about the origin) conserved to 1e-12 relative (DEM: 1e-11, round-off
 //    of its ~10x more substeps);
 //    kinetic energy conserved to 1e-9 for e = 1 head-on.
-#include <particulate/rigid/box.h>
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/box.h>
+#include <particulate/geometry/sphere.h>
 #include <particulate/rigid/world.h>
 
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 namespace {
   World

@@ -5,13 +5,14 @@
 // edges start at the body resting on the fixed one (shock-propagation
 // order). Also checks that the contact graph keeps the warm-start cache of
 // persistent pairs (edge state persistent_contact, cached impulse > 0).
-#include <particulate/rigid/box.h>
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/box.h>
+#include <particulate/geometry/sphere.h>
 
 #include "scene_tools.h"
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

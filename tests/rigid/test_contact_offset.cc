@@ -6,7 +6,7 @@
 // is the offset minus the spring compression m g / k of each contact, and
 // the impact may compress the spring by at most the undamped bound
 // v sqrt(m / k).
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/sphere.h>
 
 #include <cmath>
 
@@ -14,6 +14,7 @@
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

@@ -7,14 +7,15 @@
 // - a slightly tilted ellipsoid dropped flat rocks on its flattest side: its
 //   energy never exceeds the initial one, it never sinks more than 1 % into
 //   the floor and ends within 1 % of its size of the resting height.
-#include <particulate/rigid/capsule.h>
-#include <particulate/rigid/cylinder.h>
-#include <particulate/rigid/ellipsoid.h>
+#include <particulate/geometry/capsule.h>
+#include <particulate/geometry/cylinder.h>
+#include <particulate/geometry/ellipsoid.h>
 
 #include "scene_tools.h"
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

@@ -7,12 +7,12 @@
 // - random convex pairs: the GJK distance equals the minimum over sampled
 //   surface points within the sampling error, and never exceeds it; the
 //   witness points lie on the surfaces (|phi| < 1e-6).
-#include <particulate/rigid/box.h>
-#include <particulate/rigid/capsule.h>
-#include <particulate/rigid/cylinder.h>
-#include <particulate/rigid/ellipsoid.h>
+#include <particulate/geometry/box.h>
+#include <particulate/geometry/capsule.h>
+#include <particulate/geometry/cylinder.h>
+#include <particulate/geometry/ellipsoid.h>
+#include <particulate/geometry/sphere.h>
 #include <particulate/rigid/gjk_epa.h>
-#include <particulate/rigid/sphere.h>
 
 #include <Eigen/Geometry>
 
@@ -22,6 +22,7 @@
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 namespace {
   ConvexPlacement

@@ -4,12 +4,13 @@
 //   the DEM plus twice the elastic deflection of its tangential springs);
 // - tan(theta) = 0.7 > mu_s: it slides with a = g (sin(theta) - mu_d
 //   cos(theta)) within 1 %, measured between t = 0.5 s and 1.5 s.
-#include <particulate/rigid/box.h>
+#include <particulate/geometry/box.h>
 
 #include "scene_tools.h"
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

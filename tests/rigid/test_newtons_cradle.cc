@@ -4,12 +4,13 @@
 // with at least 95 % of v and the others nearly stop (velocity solvers:
 // exact pairwise exchange in propagation order). The DEM's linear springs
 // disperse the pulse, which is reported, not asserted.
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/sphere.h>
 
 #include "scene_tools.h"
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

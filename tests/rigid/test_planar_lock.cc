@@ -4,7 +4,7 @@
 // asks for, for every contact solver: the contact points GJK finds lie
 // anywhere along the cylinders' length, and without the lock their impulses
 // tilt the bodies instead of stopping them (the stack then falls over).
-#include <particulate/rigid/cylinder.h>
+#include <particulate/geometry/cylinder.h>
 
 #include <cmath>
 
@@ -12,6 +12,7 @@
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

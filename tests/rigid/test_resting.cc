@@ -3,12 +3,13 @@
 // contact solver. The DEM sphere starts at its equilibrium overlap m g / k.
 // Also checks that the contact force reported to the coupling (averaged
 // over the step) equals the weight to 1e-6, with 1 and 4 substeps per step.
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/sphere.h>
 
 #include "scene_tools.h"
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

@@ -19,7 +19,7 @@ main()
 {
   SceneDescription scene;
   BodyDescription  b;
-  b.shape.type   = ShapeType::sphere;
+  b.shape.kind   = particulate::geometry::ShapeKind::sphere;
   b.shape.radius = 0.05;
   b.position     = Eigen::Vector3d(0.1, 0.2, 0.5);
   scene.bodies.push_back(b);

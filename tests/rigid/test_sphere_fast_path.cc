@@ -10,7 +10,7 @@
 // (rounding, which the contacts amplify). Also: a checkpoint of the fast
 // path continues bit for bit on the fast path and to 1e-11 on the general
 // path, and adding a box hands the state back to the general path.
-#include <particulate/rigid/box.h>
+#include <particulate/geometry/box.h>
 #include <particulate/rigid/scene.h>
 
 #include <random>
@@ -19,6 +19,7 @@
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 namespace {
   const double dt = 1.e-3;
@@ -55,7 +56,7 @@ namespace {
     for (int i = 0; i < 64; ++i)
       {
         BodyDescription sphere;
-        sphere.shape.type   = ShapeType::sphere;
+        sphere.shape.kind   = particulate::geometry::ShapeKind::sphere;
         sphere.shape.radius = r * (1. + 0.01 * u(rng));
         sphere.material     = i % 2;
         sphere.position     = Eigen::Vector3d(r + (i % 4) * spacing,
@@ -107,7 +108,7 @@ namespace {
     for (BodyId id = 0; id < a.n_bodies(); ++id)
       {
         const RigidBody &x = a.body(id);
-        if (x.shape().type() == ShapeType::sphere)
+        if (x.shape().kind() == particulate::geometry::ShapeKind::sphere)
           r_min = std::min(r_min, x.bounding_radius());
         v_max = std::max(v_max, x.linear_velocity.norm());
         w_max = std::max(w_max, x.angular_velocity.norm());

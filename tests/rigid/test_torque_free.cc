@@ -3,12 +3,13 @@
 // over 1e4 steps, and the intermediate-axis (Dzhanibekov) flip: spinning
 // about the middle principal axis with a tiny perturbation, the body-frame
 // angular velocity about that axis reverses sign periodically.
-#include <particulate/rigid/box.h>
+#include <particulate/geometry/box.h>
 #include <particulate/rigid/newton_euler_integrator.h>
 
 #include "test_tools.h"
 
 using namespace particulate::rigid;
+using namespace particulate::geometry;
 
 int
 main()

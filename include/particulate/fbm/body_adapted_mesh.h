@@ -2,8 +2,8 @@
 #define particulate_fbm_body_adapted_mesh_h
 
 #include <particulate/deformation/moving_mesh.h>
-#include <particulate/fbm/particle_parameters.h>
 #include <particulate/fluid/navier_stokes.h>
+#include <particulate/geometry/pose.h>
 #include <particulate/geometry/shape.h>
 
 #include <Eigen/Core>
@@ -27,33 +27,35 @@ namespace particulate {
     public:
       /**
        * @p tria must be the distributed mesh that core::create_mesh() made
-       * from @p mesh. Nothing moves yet.
+       * from @p mesh; @p shapes are the bodies' shapes, one per body (the
+       * objects their rigid bodies hold). Nothing moves yet.
        */
-      BodyAdaptedMesh(const core::MeshParameters               &mesh,
-                      const deformation::DeformationParameters &parameters,
-                      const ParticleParameters                 &particles,
-                      dealii::Triangulation<dim>               &tria);
+      BodyAdaptedMesh(
+        const core::MeshParameters                                &mesh,
+        const deformation::DeformationParameters                  &parameters,
+        const std::vector<std::shared_ptr<const geometry::Shape>> &shapes,
+        dealii::Triangulation<dim>                                &tria);
 
       /**
-       * Before the flow solver is set up: adapt to particles centred at
-       * @p centres and move @p tria there.
+       * Before the flow solver is set up: adapt to the bodies placed at
+       * @p poses and move @p tria there.
        */
       deformation::DeformationReport
-      adapt(const std::vector<Eigen::Vector3d> &centres);
+      adapt(const std::vector<geometry::Pose> &poses);
 
       /**
-       * During the run: follow the particles to their new @p centres
-       * (deformation::MovingMesh::follow(); carried vertices move
-       * with the nearest particle's translation: the shapes are spheres
-       * and disks, which look the same however they turn) and move
+       * During the run: follow the bodies to their new @p poses
+       * (deformation::MovingMesh::follow(); a carried vertex moves with the
+       * body whose centre was nearest, rigidly, or by its translation alone
+       * for a body that looks the same however it turns) and move
        * @p flow's mesh there over the coming step @p time_step (ALE), or,
        * when a carried mesh was adapted afresh, carry the flow over to the
        * new mesh (fluid::NavierStokes::transfer_to_moved_mesh()).
        */
       deformation::DeformationReport
-      follow(const std::vector<Eigen::Vector3d> &centres,
-             fluid::NavierStokes<dim>           &flow,
-             const double                        time_step);
+      follow(const std::vector<geometry::Pose> &poses,
+             fluid::NavierStokes<dim>          &flow,
+             const double                       time_step);
 
       /** Put the positions of save() into the distributed mesh (restart,
        *  before the flow solver is set up). */
@@ -69,15 +71,24 @@ namespace particulate {
       }
 
     private:
-      /** The particles at @p centres as distance fields. */
+      /** The bodies at @p poses as distance fields. */
       deformation::ShapeDistanceField<dim>
-      distance_field(const std::vector<Eigen::Vector3d> &centres) const;
+      distance_field(const std::vector<geometry::Pose> &poses) const;
 
-      deformation::MovingMesh<dim>           moving_mesh;
-      dealii::Triangulation<dim>            &tria;
-      std::unique_ptr<const geometry::Shape> shape;
-      /// where the mesh last saw the particles
-      std::vector<Eigen::Vector3d> centres;
+      /** Where a vertex at @p x moves when the body nearest to it moves
+       *  from poses to @p now. */
+      dealii::Tensor<1, dim>
+      carried_displacement(const dealii::Point<dim>          &x,
+                           const std::vector<geometry::Pose> &now) const;
+
+      deformation::MovingMesh<dim> moving_mesh;
+      dealii::Triangulation<dim>  &tria;
+      /// the shapes as the mesh sees them, one per body
+      std::vector<std::shared_ptr<const geometry::Shape>> shapes;
+      /// whether each body looks the same however it turns
+      std::vector<bool> rotation_invariant;
+      /// where the mesh last saw the bodies
+      std::vector<geometry::Pose> poses;
     };
   } // namespace fbm
 } // namespace particulate

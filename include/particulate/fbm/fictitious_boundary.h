@@ -36,12 +36,10 @@ namespace particulate {
     public:
       using DofIndex = dealii::types::global_dof_index;
 
-      /** A body as the interface sees it. */
+      /** A body as the interface sees it: its pose, velocity and shape. */
       struct Body
       {
         const rigid::RigidBody *body = nullptr;
-        /// radius of the ball around the centre that holds the body [m]
-        double radius = 0.;
       };
 
       /** Which nodes take a body's rigid velocity. */
@@ -170,6 +168,10 @@ namespace particulate {
 
       void
       classify_with_engine(const std::vector<Body> &bodies);
+      /** The radius of the one-sphere set that stands for @p shape on the
+       *  engine: a sphere's, or a 2D disk's; other shapes throw. */
+      static double
+      engine_sphere_radius(const geometry::Shape &shape);
       void
       make_half_spacing_consistent();
       /** How far outside a body a node may lie and still be covered, as a

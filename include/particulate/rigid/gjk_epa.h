@@ -1,7 +1,7 @@
 #ifndef particulate_rigid_gjk_epa_h
 #define particulate_rigid_gjk_epa_h
 
-#include <particulate/rigid/shape.h>
+#include <particulate/geometry/shape.h>
 
 #include <Eigen/Core>
 
@@ -10,7 +10,7 @@ namespace particulate::rigid {
   struct ConvexPlacement
   {
     /** The (convex, bounded) shape. */
-    const Shape *shape;
+    const geometry::Shape *shape;
     /** Rotation body to world. */
     Eigen::Matrix3d rotation;
     /** Position of the body origin in m. */

@@ -1,7 +1,7 @@
 #ifndef particulate_rigid_rigid_body_h
 #define particulate_rigid_rigid_body_h
 
-#include <particulate/rigid/shape.h>
+#include <particulate/geometry/shape.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -37,10 +37,10 @@ namespace particulate::rigid {
      * @param density Mass density in kg/m^3 (ignored for fixed bodies).
      * @param fixed Whether the body is immovable.
      */
-    RigidBody(std::shared_ptr<const Shape> shape,
-              unsigned int                 material,
-              double                       density,
-              bool                         fixed);
+    RigidBody(std::shared_ptr<const geometry::Shape> shape,
+              unsigned int                           material,
+              double                                 density,
+              bool                                   fixed);
 
     /** @name State (public, SI units, world frame) */
     /** @{ */
@@ -97,13 +97,13 @@ namespace particulate::rigid {
     apply_impulse(const Eigen::Vector3d &P, const Eigen::Vector3d &p);
 
     /** The shape (body frame). */
-    const Shape &
+    const geometry::Shape &
     shape() const
     {
       return *shape_;
     }
     /** The shared pointer to the shape. */
-    const std::shared_ptr<const Shape> &
+    const std::shared_ptr<const geometry::Shape> &
     shape_ptr() const
     {
       return shape_;
@@ -221,13 +221,13 @@ namespace particulate::rigid {
     angular_momentum() const;
 
   private:
-    std::array<bool, 3>          rotation_locked_ = {{false, false, false}};
-    std::shared_ptr<const Shape> shape_;
-    unsigned int                 material_;
-    bool                         fixed_;
-    double                       inverse_mass_;
-    Eigen::Vector3d              inertia_;
-    Eigen::Vector3d              inverse_inertia_;
+    std::array<bool, 3> rotation_locked_ = {{false, false, false}};
+    std::shared_ptr<const geometry::Shape> shape_;
+    unsigned int                           material_;
+    bool                                   fixed_;
+    double                                 inverse_mass_;
+    Eigen::Vector3d                        inertia_;
+    Eigen::Vector3d                        inverse_inertia_;
   };
 } // namespace particulate::rigid
 

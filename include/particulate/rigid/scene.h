@@ -1,8 +1,8 @@
 #ifndef particulate_rigid_scene_h
 #define particulate_rigid_scene_h
 
+#include <particulate/geometry/shape.h>
 #include <particulate/rigid/material.h>
-#include <particulate/rigid/shape.h>
 #include <particulate/rigid/world.h>
 
 #include <memory>
@@ -13,8 +13,8 @@ namespace particulate::rigid {
   /** A shape by value, as an input file describes it. */
   struct ShapeDescription
   {
-    /** Which shape. For ShapeType::signed_distance set `custom`. */
-    ShapeType type = ShapeType::sphere;
+    /** Which shape. For geometry::ShapeKind::general set `custom`. */
+    geometry::ShapeKind kind = geometry::ShapeKind::sphere;
     /** Sphere, cylinder, capsule radius in m. */
     double radius = 0.;
     /** Cylinder half height / capsule half length in m. */
@@ -25,12 +25,12 @@ namespace particulate::rigid {
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     /** Half-space offset in m. */
     double offset = 0.;
-    /** A ready-made shape (meshes); used when type is signed_distance. */
-    std::shared_ptr<const Shape> custom;
+    /** A ready-made shape (meshes); used when type is general. */
+    std::shared_ptr<const geometry::Shape> custom;
 
     /** Builds the shape; throws std::invalid_argument with the reason for
      * inconsistent values. */
-    std::shared_ptr<const Shape>
+    std::shared_ptr<const geometry::Shape>
     create() const;
   };
 

@@ -120,10 +120,10 @@ namespace particulate::rigid {
      * half-spaces must be fixed).
      */
     BodyId
-    add_body(std::shared_ptr<const Shape> shape,
-             unsigned int                 material,
-             const Eigen::Vector3d       &position,
-             const Eigen::Quaterniond    &orientation
+    add_body(std::shared_ptr<const geometry::Shape> shape,
+             unsigned int                           material,
+             const Eigen::Vector3d                 &position,
+             const Eigen::Quaterniond              &orientation
              = Eigen::Quaterniond::Identity(),
              bool fixed = false);
 

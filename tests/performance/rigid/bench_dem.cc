@@ -54,7 +54,8 @@ main(int argc, char **argv)
   World        w                         = [&] {
     World world(scene.world);
     world.add_material(m);
-    auto sphere = ShapeDescription{ShapeType::sphere, r}.create();
+    auto sphere
+      = ShapeDescription{particulate::geometry::ShapeKind::sphere, r}.create();
     const Eigen::Vector3d lo(0., 0., 0.),
       hi(side * a + 0.1 * r, side * a + 0.1 * r, 1.);
     PouringDescription walls;

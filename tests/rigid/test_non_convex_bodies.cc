@@ -1,14 +1,15 @@
-// Mesh-like bodies through the SignedDistanceShape interface, with an
+// Non-convex bodies, which the narrow phase meets through their signed
+// distance and surface points (geometry::ShapeKind::general), with an
 // analytic torus standing in for a distance map (major radius R = 0.1 m,
-// minor radius r = 0.03 m, axis z): a non-convex body.
+// minor radius r = 0.03 m, axis z).
 // - The torus dropped flat comes to rest with its centre at height r.
 // - A small sphere (radius 0.03 < R - r) dropped on the axis falls through
 //   the hole onto the floor (centre at its radius).
 // - A large sphere (radius 0.1) dropped on the axis rests on the ring at
 //   the closed-form height z_torus + sqrt((r + r_s)^2 - R^2).
 // Heights to 1 % of the minor radius, with both velocity solvers.
-#include <particulate/rigid/signed_distance_shape.h>
-#include <particulate/rigid/sphere.h>
+#include <particulate/geometry/sphere.h>
+#include <particulate/geometry/torus.h>
 
 #include <cmath>
 
@@ -16,45 +17,7 @@
 #include "test_tools.h"
 
 using namespace particulate::rigid;
-
-namespace {
-  class Torus : public SignedDistanceShape
-  {
-  public:
-    Torus(const double R, const double r)
-      : SignedDistanceShape(2. * M_PI * M_PI * R * r * r,
-                            2. * M_PI * M_PI * R * r * r
-                              * Eigen::Vector3d(R * R / 2. + 5. / 8. * r * r,
-                                                R * R / 2. + 5. / 8. * r * r,
-                                                R * R + 0.75 * r * r),
-                            R + r)
-      , R_(R)
-      , r_(r)
-    {}
-    double
-    signed_distance(const Eigen::Vector3d &p) const override
-    {
-      return std::hypot(std::hypot(p[0], p[1]) - R_, p[2]) - r_;
-    }
-    std::vector<Eigen::Vector3d>
-    surface_points() const override
-    {
-      std::vector<Eigen::Vector3d> pts;
-      for (int i = 0; i < 36; ++i)
-        for (int j = 0; j < 12; ++j)
-          {
-            const double u = 2. * M_PI * i / 36., v = 2. * M_PI * j / 12.;
-            pts.emplace_back((R_ + r_ * std::cos(v)) * std::cos(u),
-                             (R_ + r_ * std::cos(v)) * std::sin(u),
-                             r_ * std::sin(v));
-          }
-      return pts;
-    }
-
-  private:
-    double R_, r_;
-  };
-} // namespace
+using namespace particulate::geometry;
 
 int
 main()
