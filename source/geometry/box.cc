@@ -1,6 +1,8 @@
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/geometry_error.h>
 
+#include "shape_formulas.h"
+
 namespace particulate::geometry {
 
   Box::Box(const Eigen::Vector3d &half_extents)
@@ -56,10 +58,7 @@ namespace particulate::geometry {
   Eigen::Matrix3d
   Box::unit_inertia() const
   {
-    const Eigen::Vector3d s = h.cwiseAbs2();
-    return (volume() / 3.
-            * Eigen::Vector3d(s[1] + s[2], s[0] + s[2], s[0] + s[1]))
-      .asDiagonal();
+    return detail::axis_aligned_inertia(3., volume(), h);
   }
 
 
@@ -77,12 +76,9 @@ namespace particulate::geometry {
   std::vector<Eigen::Vector3d>
   Box::surface_points() const
   {
-    std::vector<Eigen::Vector3d> points;
-    for (int i = -1; i <= 1; ++i)
-      for (int j = -1; j <= 1; ++j)
-        for (int k = -1; k <= 1; ++k)
-          if (i != 0 || j != 0 || k != 0)
-            points.push_back(h.cwiseProduct(Eigen::Vector3d(i, j, k)));
+    std::vector<Eigen::Vector3d> points = detail::cube_neighbour_directions();
+    for (auto &p : points)
+      p = h.cwiseProduct(p);
     return points;
   }
 

@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "shape_formulas.h"
+
 namespace particulate::geometry {
 
   namespace {
@@ -256,10 +258,7 @@ namespace particulate::geometry {
   Eigen::Matrix3d
   Ellipsoid::unit_inertia() const
   {
-    const Eigen::Vector3d s = e.cwiseAbs2();
-    return (volume() / 5.
-            * Eigen::Vector3d(s[1] + s[2], s[0] + s[2], s[0] + s[1]))
-      .asDiagonal();
+    return detail::axis_aligned_inertia(5., volume(), e);
   }
 
 
@@ -279,13 +278,9 @@ namespace particulate::geometry {
   std::vector<Eigen::Vector3d>
   Ellipsoid::surface_points() const
   {
-    std::vector<Eigen::Vector3d> points;
-    for (int i = -1; i <= 1; ++i)
-      for (int j = -1; j <= 1; ++j)
-        for (int k = -1; k <= 1; ++k)
-          if (i != 0 || j != 0 || k != 0)
-            points.push_back(
-              e.cwiseProduct(Eigen::Vector3d(i, j, k).normalized()));
+    std::vector<Eigen::Vector3d> points = detail::cube_neighbour_directions();
+    for (auto &p : points)
+      p = e.cwiseProduct(p.normalized());
     return points;
   }
 

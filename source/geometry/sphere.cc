@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "shape_formulas.h"
+
 namespace particulate::geometry {
 
   Sphere::Sphere(const double radius)
@@ -73,12 +75,9 @@ namespace particulate::geometry {
   std::vector<Eigen::Vector3d>
   Sphere::surface_points() const
   {
-    std::vector<Eigen::Vector3d> points;
-    for (int i = -1; i <= 1; ++i)
-      for (int j = -1; j <= 1; ++j)
-        for (int k = -1; k <= 1; ++k)
-          if (i != 0 || j != 0 || k != 0)
-            points.push_back(r * Eigen::Vector3d(i, j, k).normalized());
+    std::vector<Eigen::Vector3d> points = detail::cube_neighbour_directions();
+    for (auto &p : points)
+      p = r * p.normalized();
     return points;
   }
 

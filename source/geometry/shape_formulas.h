@@ -1,0 +1,42 @@
+#ifndef PARTICULATE_SOURCE_GEOMETRY_SHAPE_FORMULAS_H
+#define PARTICULATE_SOURCE_GEOMETRY_SHAPE_FORMULAS_H
+
+// Closed forms that several analytic shapes share (private to the module).
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace particulate::geometry::detail {
+
+  /** The 26 directions from a cube cell to its neighbours, (i, j, k) with
+   *  components in {-1, 0, 1}, not normalised: a cheap, symmetric sampling
+   *  of the directions for surface points. */
+  inline std::vector<Eigen::Vector3d>
+  cube_neighbour_directions()
+  {
+    std::vector<Eigen::Vector3d> directions;
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int k = -1; k <= 1; ++k)
+          if (i != 0 || j != 0 || k != 0)
+            directions.emplace_back(i, j, k);
+    return directions;
+  }
+
+  /** The unit-density inertia V / n (b^2 + c^2, a^2 + c^2, a^2 + b^2) of a
+   *  solid with half axes (a, b, c) = @p half_axes along the body axes and
+   *  volume V: n = 3 for the box, 5 for the ellipsoid [m^5]. */
+  inline Eigen::Matrix3d
+  axis_aligned_inertia(const double           n,
+                       const double           volume,
+                       const Eigen::Vector3d &half_axes)
+  {
+    const Eigen::Vector3d s = half_axes.cwiseAbs2();
+    return (volume / n * Eigen::Vector3d(s[1] + s[2], s[0] + s[2], s[0] + s[1]))
+      .asDiagonal();
+  }
+
+} // namespace particulate::geometry::detail
+
+#endif
