@@ -3,20 +3,23 @@
 #include <particulate/core/progress_reporter.h>
 #include <particulate/core/time_series_writer.h>
 #include <particulate/fbm/body_adapted_mesh.h>
+#include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
 #include <particulate/fbm/particle_shape.h>
+#include <particulate/fbm/particulate_flow_output.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
+#include <particulate/fbm/prescribed_motion.h>
+#include <particulate/fbm/rigid_body_update.h>
 #include <particulate/fluid/flow_diagnostics.h>
-#include <particulate/fluid/flow_output.h>
 #include <particulate/fluid/navier_stokes.h>
 #include <particulate/geometry/half_space.h>
-#include <particulate/rigid/vtp_writer.h>
 #include <particulate/rigid/world.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <array>
 #include <chrono>
@@ -58,6 +61,61 @@ namespace particulate {
       }
     } // namespace
 
+
+
+    /** Everything a run holds between its stages. */
+    template <int dim>
+    struct ParticulateFlowSimulation<dim>::Run
+    {
+      Run(const ParticulateFlowParameters &parameters, MPI_Comm comm)
+        : pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+        , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+        , tria(comm)
+        , rigid_update(parameters.particles,
+                       parameters.flow.fluid.properties.density)
+        , output(parameters.flow.output, comm)
+        , checkpoint(parameters.flow.output.directory, comm)
+      {}
+
+      ConditionalOStream                             pcout;
+      TimerOutput                                    timer;
+      parallel::fullydistributed::Triangulation<dim> tria;
+      Point<dim>                                     box_lower, box_upper;
+      /// 2 per mirror plane: the loads and energies of the whole set-up
+      unsigned int n_images = 1;
+      /// the one shape every body's description produces: the rigid body,
+      /// the interface and the mesh deformation all read it
+      std::shared_ptr<const geometry::Shape>              shape;
+      std::unique_ptr<PrescribedMotion<dim>>              prescribed;
+      std::vector<Eigen::Vector3d>                        initial_centres;
+      std::unique_ptr<BodyAdaptedMesh<dim>>               adapted_mesh;
+      deformation::DeformationReport                      initial_report;
+      std::unique_ptr<fluid::NavierStokes<dim>>           flow;
+      std::unique_ptr<rigid::World>                       world;
+      std::vector<rigid::BodyId>                          ids;
+      RigidBodyUpdate                                     rigid_update;
+      std::unique_ptr<FictitiousBoundary<dim>>            interface;
+      std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
+      std::vector<BodyCouplingState>                      states;
+      /// 'Force integral = stress and inertia': the flow at the start of
+      /// the step
+      std::optional<typename fluid::NavierStokes<dim>::BlockVector> step_start;
+      /// the counts of the last solve
+      fluid::SolveStatistics                  statistics;
+      ParticulateFlowOutput<dim>              output;
+      const core::Checkpoint                  checkpoint;
+      std::unique_ptr<core::ProgressReporter> progress;
+      /// wall seconds of the last checkpoint
+      double                 last_checkpoint = 0.;
+      ParticulateFlowSummary summary;
+      /// the mesh follows moving bodies at the start of every step
+      bool mesh_follows = false;
+      /// a free body shows the fluid a predicted interface
+      bool predict_interface = false;
+    };
+
+
+
     template <int dim>
     ParticulateFlowSimulation<dim>::ParticulateFlowSimulation(
       const ParticulateFlowParameters &parameters,
@@ -68,20 +126,58 @@ namespace particulate {
       , communicator(comm)
     {}
 
+
+
+    template <int dim>
+    ParticulateFlowSimulation<dim>::~ParticulateFlowSimulation() = default;
+
+
+
     template <int dim>
     ParticulateFlowSummary
     ParticulateFlowSimulation<dim>::run()
     {
-      ConditionalOStream pcout(std::cout,
-                               Utilities::MPI::this_mpi_process(communicator)
-                                 == 0);
-      TimerOutput        timer(communicator,
-                        pcout,
-                        TimerOutput::never,
-                        TimerOutput::wall_times);
-      const auto        &flow_p     = parameters.flow;
-      const auto        &particle_p = parameters.particles;
-      const auto        &time_p     = flow_p.time;
+      set_up();
+      const auto &time_p = parameters.flow.time;
+      if (time_p.scheme == core::TimeParameters::Scheme::steady)
+        solve_steady();
+      else
+        {
+          while (!at_end_time())
+            {
+              const double k = dt  = std::min(dt, time_p.end_time - t);
+              const auto   started = std::chrono::steady_clock::now();
+              {
+                // everything of a step but output and diagnostics
+                TimerOutput::Scope scope(run_->timer, "coupled step (total)");
+                move_mesh(k);
+                impose_interface(k);
+                advance_fluid(k);
+                compute_loads(k);
+                advance_bodies(k);
+              }
+              run_->summary.step_seconds.push_back(
+                std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                              - started)
+                  .count());
+              write_output(k);
+              if (time_p.adaptive)
+                dt = time_p.next_time_step(dt, run_->flow->cfl_number(dt));
+              if (checkpoint_due())
+                write_checkpoint();
+            }
+        }
+      return summarise();
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::set_up()
+    {
+      const auto &particle_p = parameters.particles;
+      const auto &time_p     = parameters.flow.time;
       if (time_p.scheme == core::TimeParameters::Scheme::steady
           && particle_p.motion != ParticleParameters::Motion::fixed)
         throw std::runtime_error(
@@ -94,35 +190,99 @@ namespace particulate {
           parameter_file
           + ": a 'particulate flow' run needs at least one particle: set "
             "'Positions' in subsection 'Particles'.");
+      run_   = std::make_unique<Run>(parameters, communicator);
+      Run &r = *run_;
 
-      parallel::fullydistributed::Triangulation<dim> tria(communicator);
+      create_mesh();
+      if (particle_p.motion == ParticleParameters::Motion::prescribed)
+        r.prescribed = std::make_unique<PrescribedMotion<dim>>(
+          particle_p.prescribed_displacement,
+          time_p.end_time);
+      r.initial_centres = particle_p.positions;
+      if (r.prescribed)
+        for (auto &c : r.initial_centres)
+          c = r.prescribed->state(c, 0.).first;
+      r.shape = make_particle_shape(particle_p);
+      adapt_mesh_to_bodies();
+
+      r.flow = std::make_unique<fluid::NavierStokes<dim>>(parameters.flow.fluid,
+                                                          r.tria,
+                                                          r.timer);
+      r.flow->setup_dofs();
+      r.flow->set_initial_condition(0.);
+      add_bodies();
+      set_up_interface();
+
+      r.states.assign(r.ids.size(), BodyCouplingState());
+      r.summary.n_dofs = r.flow->n_dofs();
+      t                = 0.;
+      dt               = time_p.time_step;
+      step             = 0;
+      if (parameters.restart)
+        read_checkpoint();
+      r.output.open_time_series(r.ids.size(),
+                                r.adapted_mesh != nullptr,
+                                parameters.restart,
+                                t);
+      r.progress = std::make_unique<core::ProgressReporter>(
+        r.pcout.get_stream(),
+        t,
+        time_p.scheme == core::TimeParameters::Scheme::steady ?
+          1. :
+          time_p.end_time);
+      r.mesh_follows = r.adapted_mesh && !particle_p.motion_is_fixed();
+      r.predict_interface
+        = particle_p.motion == ParticleParameters::Motion::free
+          && (particle_p.extrapolate_constraint_velocity
+              || particle_p.midpoint_interface_position);
+
+      impose_body_velocities();
+      if (!parameters.restart)
+        {
+          for (auto &s : r.states)
+            s.mark_solved();
+          r.output.record_mesh(0., r.initial_report);
+          record(dt);
+          TimerOutput::Scope scope(r.timer, "output");
+          r.output.write_fields(*r.flow, *r.world, 0, 0.);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::create_mesh()
+    {
+      Run        &r          = *run_;
+      const auto &particle_p = parameters.particles;
       {
-        TimerOutput::Scope scope(timer, "mesh");
-        core::create_mesh(flow_p.mesh, tria);
+        TimerOutput::Scope scope(r.timer, "mesh");
+        core::create_mesh(parameters.flow.mesh, r.tria);
       }
-      flow_p.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
-                                             parameter_file);
-      const auto [box_lower, box_upper]
-        = core::global_bounding_box(tria, communicator);
+      parameters.flow.fluid.boundary_conditions.check(core::global_boundary_ids(
+                                                        r.tria),
+                                                      parameter_file);
+      std::tie(r.box_lower, r.box_upper)
+        = core::global_bounding_box(r.tria, communicator);
       for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
-          if (particle_p.positions[i][d] < box_lower[d]
-              || particle_p.positions[i][d] > box_upper[d])
+          if (particle_p.positions[i][d] < r.box_lower[d]
+              || particle_p.positions[i][d] > r.box_upper[d])
             throw std::runtime_error(
               parameter_file
               + ": subsection 'Particles', entry 'Positions': " + "particle "
               + std::to_string(i) + " lies outside the mesh's bounding box.");
       // mirror planes: the centres lie on them
-      unsigned int n_images = 1;
       for (unsigned int f = 0; f < 2 * dim; ++f)
         if (particle_p.symmetry_planes[f])
           {
-            n_images *= 2;
+            r.n_images *= 2;
             const unsigned int a     = f / 2;
-            const double       plane = f % 2 ? box_upper[a] : box_lower[a];
+            const double       plane = f % 2 ? r.box_upper[a] : r.box_lower[a];
             for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
               if (std::abs(particle_p.positions[i][a] - plane)
-                  > 1e-9 * (box_upper[a] - box_lower[a]))
+                  > 1e-9 * (r.box_upper[a] - r.box_lower[a]))
                 throw std::runtime_error(
                   parameter_file
                   + ": subsection 'Particles', entry 'Symmetry planes': "
@@ -131,121 +291,90 @@ namespace particulate {
                   + "xyz"[a] + " = " + std::to_string(plane)
                   + "; put its centre there or remove the plane.");
           }
+    }
 
-      const bool prescribed
-        = particle_p.motion == ParticleParameters::Motion::prescribed;
-      const std::unique_ptr<Function<dim>> displacement
-        = prescribed ? particle_p.prescribed_displacement.template create<dim>(
-            dim,
-            "Particles / Prescribed displacement") :
-                       nullptr;
-      // where a prescribed particle is at time @p t, and how fast it moves
-      // (central difference of the displacement: the expression is smooth)
-      const auto prescribed_state
-        = [&](const Eigen::Vector3d &start, const double t) {
-            const double    h = 1e-6 * std::max(1., time_p.end_time);
-            Eigen::Vector3d x = start, v = Eigen::Vector3d::Zero();
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                displacement->set_time(t);
-                x[d] += displacement->value(Point<dim>(), d);
-                displacement->set_time(t + h);
-                v[d] = displacement->value(Point<dim>(), d);
-                displacement->set_time(t - h);
-                v[d] = (v[d] - displacement->value(Point<dim>(), d)) / (2. * h);
-              }
-            return std::make_pair(x, v);
-          };
-      std::vector<Eigen::Vector3d> initial_centres = particle_p.positions;
-      if (prescribed)
-        for (auto &c : initial_centres)
-          c = prescribed_state(c, 0.).first;
 
-      // r-adaptivity: the mesh resolves the particles where they start
-      // the one shape every body's description produces: the rigid body,
-      // the interface and the mesh deformation all read it
-      const std::shared_ptr<const geometry::Shape> shape
-        = make_particle_shape(particle_p);
-      std::vector<geometry::Pose> initial_poses;
-      for (const auto &c : initial_centres)
-        initial_poses.emplace_back(Eigen::Matrix3d::Identity(), c);
-      std::unique_ptr<BodyAdaptedMesh<dim>> adapted_mesh;
-      deformation::DeformationReport        initial_report;
-      const bool                            deforming
-        = parameters.deformation.method
-            != deformation::DeformationParameters::Method::none
-          || parameters.deformation.following
-               == deformation::DeformationParameters::Following::
-                 carry_neighbourhood;
-      if (deforming)
-        {
-          TimerOutput::Scope scope(timer, "mesh deformation");
-          adapted_mesh = std::make_unique<BodyAdaptedMesh<dim>>(
-            flow_p.mesh,
-            parameters.deformation,
-            std::vector<std::shared_ptr<const geometry::Shape>>(
-              initial_poses.size(),
-              shape),
-            tria);
-          initial_report     = adapted_mesh->adapt(initial_poses);
-          const auto &report = initial_report;
-          pcout << "Mesh deformation: " << adapted_mesh->mesh().method_name()
-                << ", min scaled Jacobian "
-                << report.quality.min_scaled_jacobian
-                << ", largest aspect ratio " << report.quality.max_aspect_ratio
-                << std::endl;
-        }
 
-      fluid::NavierStokes<dim> flow(flow_p.fluid, tria, timer);
-      flow.setup_dofs();
-      flow.set_initial_condition(0.);
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::adapt_mesh_to_bodies()
+    {
+      // r-adaptivity: the mesh resolves the bodies where they start
+      Run &r = *run_;
+      if (parameters.deformation.method
+            == deformation::DeformationParameters::Method::none
+          && parameters.deformation.following
+               != deformation::DeformationParameters::Following::
+                 carry_neighbourhood)
+        return;
+      TimerOutput::Scope          scope(r.timer, "mesh deformation");
+      std::vector<geometry::Pose> poses;
+      for (const auto &c : r.initial_centres)
+        poses.emplace_back(Eigen::Matrix3d::Identity(), c);
+      r.adapted_mesh = std::make_unique<BodyAdaptedMesh<dim>>(
+        parameters.flow.mesh,
+        parameters.deformation,
+        std::vector<std::shared_ptr<const geometry::Shape>>(poses.size(),
+                                                            r.shape),
+        r.tria);
+      r.initial_report   = r.adapted_mesh->adapt(poses);
+      const auto &report = r.initial_report;
+      r.pcout << "Mesh deformation: " << r.adapted_mesh->mesh().method_name()
+              << ", min scaled Jacobian " << report.quality.min_scaled_jacobian
+              << ", largest aspect ratio " << report.quality.max_aspect_ratio
+              << std::endl;
+    }
 
-      // --- rigid bodies ------------------------------------------------
-      const double rho_f = flow_p.fluid.properties.density;
-      const double rho_p = particle_p.density;
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::add_bodies()
+    {
+      Run         &r          = *run_;
+      const auto  &particle_p = parameters.particles;
+      const double rho_f      = parameters.flow.fluid.properties.density;
       const bool   free = particle_p.motion == ParticleParameters::Motion::free;
-      const double volume = shape->volume();
-      // Added-mass correction: the engine integrates the particle with mass
-      // m + m_a (density rho_p + C rho_f); the force gets + m_a a_old.
-      const double rho_engine
-        = rho_p + particle_p.added_mass_coefficient * rho_f;
-
+      // Added-mass correction (RigidBodyUpdate): the engine integrates the
+      // particle with mass m + m_a, its density rho_p + C rho_f.
       rigid::WorldParameters world_p;
-      world_p.gravity = Eigen::Vector3d::Zero(); // applied as (dM) g below
+      world_p.gravity = Eigen::Vector3d::Zero(); // applied as (dM) g
       world_p.contact_solver
         = rigid::contact_solver_type_from_string(particle_p.contact_solver);
       world_p.substeps       = particle_p.substeps;
       world_p.contact_offset = particle_p.contact_distance ?
                                  *particle_p.contact_distance :
-                                 smallest_cell_edge(tria, communicator);
-      rigid::World    world(world_p);
+                                 smallest_cell_edge(r.tria, communicator);
+      r.world                = std::make_unique<rigid::World>(world_p);
       rigid::Material material;
-      material.name            = "particle";
-      material.density         = rho_engine;
+      material.name = "particle";
+      material.density
+        = particle_p.density + particle_p.added_mass_coefficient * rho_f;
       material.restitution     = particle_p.restitution;
       material.static_friction = material.dynamic_friction
         = particle_p.friction;
-      const unsigned int particle_material = world.add_material(material);
+      const unsigned int particle_material = r.world->add_material(material);
       rigid::Material    wall_material     = material;
       wall_material.name                   = "wall";
-      const unsigned int wall_material_id  = world.add_material(wall_material);
+      const unsigned int wall_material_id
+        = r.world->add_material(wall_material);
 
-      std::vector<rigid::BodyId> ids;
       for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
         {
-          ids.push_back(world.add_body(shape,
-                                       particle_material,
-                                       initial_centres[i],
-                                       Eigen::Quaterniond::Identity(),
-                                       !free));
+          r.ids.push_back(r.world->add_body(r.shape,
+                                            particle_material,
+                                            r.initial_centres[i],
+                                            Eigen::Quaterniond::Identity(),
+                                            !free));
+          rigid::RigidBody &b = r.world->body(r.ids.back());
           // locked inside the engine, so that contacts cannot spend their
           // impulse on a rotation the coupling would discard
-          world.body(ids.back()).lock_rotation(particle_p.locked_rotation);
+          b.lock_rotation(particle_p.locked_rotation);
           if (free && !particle_p.velocities.empty())
-            world.body(ids.back()).linear_velocity = particle_p.velocities[i];
-          if (prescribed)
-            world.body(ids.back()).linear_velocity
-              = prescribed_state(particle_p.positions[i], 0.).second;
+            b.linear_velocity = particle_p.velocities[i];
+          if (r.prescribed)
+            b.linear_velocity
+              = r.prescribed->state(particle_p.positions[i], 0.).second;
         }
       for (unsigned int d = 0; d < dim; ++d)
         {
@@ -253,24 +382,34 @@ namespace particulate {
           n[d]              = 1.;
           // half-space {n.p <= offset}; n points into the fluid
           if (particle_p.walls[2 * d])
-            world.add_body(std::make_shared<geometry::HalfSpace>(n,
-                                                                 box_lower[d]),
-                           wall_material_id,
-                           Eigen::Vector3d::Zero(),
-                           Eigen::Quaterniond::Identity(),
-                           true);
+            r.world->add_body(
+              std::make_shared<geometry::HalfSpace>(n, r.box_lower[d]),
+              wall_material_id,
+              Eigen::Vector3d::Zero(),
+              Eigen::Quaterniond::Identity(),
+              true);
           if (particle_p.walls[2 * d + 1])
-            world.add_body(std::make_shared<geometry::HalfSpace>(-n,
-                                                                 -box_upper[d]),
-                           wall_material_id,
-                           Eigen::Vector3d::Zero(),
-                           Eigen::Quaterniond::Identity(),
-                           true);
+            r.world->add_body(
+              std::make_shared<geometry::HalfSpace>(-n, -r.box_upper[d]),
+              wall_material_id,
+              Eigen::Vector3d::Zero(),
+              Eigen::Quaterniond::Identity(),
+              true);
         }
+    }
 
-      FictitiousBoundary<dim> interface(flow);
-      interface.set_marking(marking_from_name<dim>(particle_p.covered_nodes));
-      interface.setup();
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::set_up_interface()
+    {
+      Run        &r          = *run_;
+      const auto &particle_p = parameters.particles;
+      r.interface = std::make_unique<FictitiousBoundary<dim>>(*r.flow);
+      r.interface->set_marking(
+        marking_from_name<dim>(particle_p.covered_nodes));
+      r.interface->setup();
       // the engine marks the nodes inside only: 'auto' keeps the hash grid
       // for the other markings (checked for 'cuda' when parsing)
       if (particle_p.containment_backend == "cuda"
@@ -278,618 +417,516 @@ namespace particulate {
               && particle_p.covered_nodes == "inside"
               && particle_p.shape != ParticleParameters::Shape::cylinder
               && cuda::ContainmentEngine::cuda_device_available()))
-        interface.use_containment_engine(cuda::Backend::cuda);
-      std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
-      for (const auto id : ids)
-        interface_bodies.push_back({&world.body(id)});
+        r.interface->use_containment_engine(cuda::Backend::cuda);
+      for (const auto id : r.ids)
+        r.interface_bodies.push_back({&r.world->body(id)});
 
-      pcout << "Mesh: " << tria.n_global_active_cells() << " cells, "
-            << flow.n_dofs() << " DoFs (" << flow.n_velocity_dofs()
-            << " velocity + " << flow.n_dofs() - flow.n_velocity_dofs()
-            << " pressure) on " << Utilities::MPI::n_mpi_processes(communicator)
-            << " rank(s); " << particle_p.n_particles()
-            << " particle(s); contact distance " << world_p.contact_offset
-            << " m\nContainment: " << interface.containment_method()
-            << std::endl;
+      r.pcout << "Mesh: " << r.tria.n_global_active_cells() << " cells, "
+              << r.flow->n_dofs() << " DoFs (" << r.flow->n_velocity_dofs()
+              << " velocity + " << r.flow->n_dofs() - r.flow->n_velocity_dofs()
+              << " pressure) on "
+              << Utilities::MPI::n_mpi_processes(communicator) << " rank(s); "
+              << particle_p.n_particles() << " particle(s); contact distance "
+              << r.world->parameters().contact_offset
+              << " m\nContainment: " << r.interface->containment_method()
+              << std::endl;
+    }
 
-      // --- state ---------------------------------------------------------
-      const unsigned int n = ids.size();
-      // the rigid velocities the covered nodes were last given, and those
-      // of the previous step's solve (what the flow holds there at the
-      // start of a step): their difference is the rigid acceleration that
-      // the fluid inside a body saw ('Force integral = stress and inertia')
-      std::vector<Eigen::Vector3d> imposed_velocity(n), imposed_angular(n);
-      std::vector<Eigen::Vector3d> solved_velocity(n), solved_angular(n);
-      std::vector<Eigen::Vector3d> acceleration(n, Eigen::Vector3d::Zero()),
-        angular_acceleration(n, Eigen::Vector3d::Zero());
-      std::vector<HydrodynamicLoad> loads(n);
-      ParticulateFlowSummary        summary;
-      summary.n_dofs = flow.n_dofs();
-      summary.max_speed.assign(n, 0.);
-      summary.time_of_max_speed.assign(n, 0.);
-      double       t    = 0.;
-      double       dt   = time_p.time_step;
-      unsigned int step = 0;
 
-      const std::string     &dir = flow_p.output.directory;
-      fluid::FlowOutput<dim> flow_output(dir, "flow");
-      rigid::VtpWriter       body_output(dir + "/particles");
-      const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
 
-      // --- checkpoint ----------------------------------------------------
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::write_checkpoint()
+    {
       // Everything the next step reads; the rest (mesh, constraints,
       // covered nodes) follows from the case file and the bodies.
-      const core::Checkpoint checkpoint(dir, communicator);
-      const auto             save_checkpoint = [&]() {
-        TimerOutput::Scope scope(timer, "checkpoint");
-        checkpoint.save(
-          [&](std::ostream &out) {
-            core::write_binary(out, t);
-            core::write_binary(out, dt);
-            core::write_binary<unsigned long>(out, step);
-            core::write_binary<unsigned long>(out, n);
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                core::write_binary(out, acceleration[i]);
-                core::write_binary(out, angular_acceleration[i]);
-                core::write_binary(out, loads[i].force);
-                core::write_binary(out, loads[i].torque);
-                core::write_binary(out, summary.max_speed[i]);
-                core::write_binary(out, summary.time_of_max_speed[i]);
-                core::write_binary(out, solved_velocity[i]);
-                core::write_binary(out, solved_angular[i]);
-              }
-            flow.save_state(out);
-            world.save_state(out);
-            if (adapted_mesh)
-              adapted_mesh->save(out);
-            core::write_binary_series(out, flow_output.written());
-            core::write_binary_series(out, body_output.written());
-          },
-          t,
-          step);
-        // the continued run rebuilds its preconditioners here, as a
-        // restarted one must: both then compute the same numbers
-        flow.reset_preconditioners();
-      };
-      if (parameters.restart)
-        {
-          if (time_p.scheme == core::TimeParameters::Scheme::steady)
-            throw std::runtime_error(
-              parameter_file
-              + ": --restart continues time-dependent runs; this case is "
-                "steady.");
-          checkpoint.load([&](std::istream &in) {
-            t    = core::read_binary<double>(in);
-            dt   = core::read_binary<double>(in);
-            step = core::read_binary<unsigned long>(in);
-            if (core::read_binary<unsigned long>(in) != n)
-              throw std::runtime_error(
-                "it has another number of particles than 'Positions'");
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                acceleration[i] = core::read_binary<Eigen::Vector3d>(in);
-                angular_acceleration[i]
-                  = core::read_binary<Eigen::Vector3d>(in);
-                loads[i].force       = core::read_binary<Eigen::Vector3d>(in);
-                loads[i].torque      = core::read_binary<Eigen::Vector3d>(in);
-                summary.max_speed[i] = core::read_binary<double>(in);
-                summary.time_of_max_speed[i] = core::read_binary<double>(in);
-                solved_velocity[i] = core::read_binary<Eigen::Vector3d>(in);
-                solved_angular[i]  = core::read_binary<Eigen::Vector3d>(in);
-              }
-            flow.load_state(in);
-            world.load_state(in);
-            if (adapted_mesh)
-              {
-                // the mesh velocity this sets is replaced before the next
-                // step uses one; the geometric matrices are what counts
-                flow.move_mesh([&]() { adapted_mesh->load(in); }, dt);
-                // V-cycles for the loaded positions, as the continued run
-                // has them after its checkpoint ('keep' would otherwise go
-                // on with those of the undeformed mesh)
-                flow.reset_preconditioners();
-                interface.setup();
-              }
-            flow_output.resume(core::read_binary_series(in));
-            body_output.resume(core::read_binary_series(in));
-          });
-          pcout << "Restarting from " << checkpoint.directory()
-                << " at t = " << t << " s (step " << step << ")" << std::endl;
-          // A fixed step comes from the parameter file: the checkpoint's may
-          // be a last step shortened to meet the old 'End time', and a user
-          // may have changed 'Time step' on purpose. An adaptive step goes
-          // on from where it was.
-          if (!time_p.adaptive && dt != time_p.time_step)
-            {
-              pcout << "Time step: " << time_p.time_step << " s from "
-                    << parameter_file
-                    << " (the checkpointed run's last step: " << dt << " s)"
-                    << std::endl;
-              dt = time_p.time_step;
-            }
-        }
-
-      // --- output --------------------------------------------------------
-      // a restart continues the series, without the rows that the cut-off
-      // run wrote after its checkpoint
-      const auto series_file = [&](const std::string &name) {
-        const std::string file = dir + "/" + name + ".dat";
-        if (parameters.restart && root)
-          core::truncate_time_series(file, t);
-        return file;
-      };
-      std::vector<std::unique_ptr<core::TimeSeriesWriter>> particle_series;
-      for (unsigned int i = 0; i < ids.size(); ++i)
-        particle_series.push_back(std::make_unique<core::TimeSeriesWriter>(
-          series_file("particle_" + std::to_string(i)),
-          std::vector<std::string>{
-            "time",        "x",    "y",       "z",       "u",
-            "v",           "w",    "omega_x", "omega_y", "omega_z",
-            "F_x",         "F_y",  "F_z",     "T_x",     "T_y",
-            "T_z",         "Fc_x", "Fc_y",    "Fc_z",    "kinetic_energy",
-            "nodes_inside"},
-          communicator,
-          parameters.restart));
-      // mesh deformation: how good the adapted mesh is, every step
-      std::unique_ptr<core::TimeSeriesWriter> mesh_series;
-      if (adapted_mesh)
-        mesh_series = std::make_unique<core::TimeSeriesWriter>(
-          series_file("mesh"),
-          std::vector<std::string>{"time",
-                                   "min_scaled_jacobian",
-                                   "mean_scaled_jacobian",
-                                   "max_aspect_ratio",
-                                   "held_back_vertices",
-                                   "projected_vertices",
-                                   "adaptation_steps",
-                                   "readapted",
-                                   "max_vertex_move"},
-          communicator,
-          parameters.restart);
-      const auto record_mesh
-        = [&](const double t, const deformation::DeformationReport &r) {
-            if (mesh_series)
-              mesh_series->write_row({t,
-                                      r.quality.min_scaled_jacobian,
-                                      r.quality.mean_scaled_jacobian,
-                                      r.quality.max_aspect_ratio,
-                                      double(r.held_back_vertices),
-                                      double(r.projected_vertices),
-                                      double(r.steps),
-                                      double(r.readapted),
-                                      r.max_vertex_move});
-          };
-      core::TimeSeriesWriter flow_series(series_file("flow"),
-                                         {"time",
-                                          "fluid_kinetic_energy",
-                                          "particle_kinetic_energy",
-                                          "nonlinear_iterations",
-                                          "linear_iterations",
-                                          "time_step"},
-                                         communicator,
-                                         parameters.restart);
-
-      // from the shape, not the engine's body: a fixed or prescribed
-      // particle is an immovable body of infinite inertia in the engine
-      const auto true_inertia_world = [&](const rigid::RigidBody &b) {
-        const Eigen::Matrix3d R = b.rotation();
-        return Eigen::Matrix3d(R * (rho_p * b.shape().unit_inertia())
-                               * R.transpose());
-      };
-      const auto particle_energy = [&](const rigid::RigidBody &b) {
-        return 0.5 * rho_p * volume * b.linear_velocity.squaredNorm()
-               + 0.5
-                   * b.angular_velocity.dot(true_inertia_world(b)
-                                            * b.angular_velocity);
-      };
-
-      const auto record = [&](const double                  t,
-                              const double                  dt,
-                              const fluid::SolveStatistics &stats) {
-        TimerOutput::Scope               scope(timer, "diagnostics");
-        double                           particles_energy = 0.;
-        const std::vector<unsigned long> nodes_inside
-          = interface.n_nodes_inside(n);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const rigid::RigidBody &b       = world.body(ids[i]);
-            Eigen::Vector3d         contact = Eigen::Vector3d::Zero();
-            if (t > 0.)
-              for (const auto &f : world.contact_forces(ids[i]))
-                contact += f.force;
-            const double e = particle_energy(b);
-            particles_energy += e;
-            std::vector<double>                          row{t};
-            const std::array<const Eigen::Vector3d *, 6> columns{
-              {&b.position,
-               &b.linear_velocity,
-               &b.angular_velocity,
-               &loads[i].force,
-               &loads[i].torque,
-               &contact}};
-            for (const Eigen::Vector3d *v : columns)
-              for (unsigned int d = 0; d < 3; ++d)
-                row.push_back((*v)[d]);
-            row.push_back(e);
-            row.push_back(double(nodes_inside[i]));
-            particle_series[i]->write_row(row);
-            if (b.linear_velocity.norm() > summary.max_speed[i])
-              {
-                summary.max_speed[i]         = b.linear_velocity.norm();
-                summary.time_of_max_speed[i] = t;
-              }
-          }
-        flow_series.write_row({t,
-                               n_images * fluid::kinetic_energy(flow),
-                               particles_energy,
-                               double(stats.nonlinear_iterations),
-                               double(stats.linear_iterations),
-                               dt});
-      };
-      const auto write_fields = [&](const unsigned int step, const double t) {
-        if (!flow_p.output.write_vtu)
-          return;
-        TimerOutput::Scope scope(timer, "output");
-        flow_output.write(flow, step, t);
-        if (root)
-          body_output.write(world);
-      };
-      // fluid loads on the bodies, completed across mirror planes
-      // centres the interface was last marked around
-      std::vector<Eigen::Vector3d> load_centres(n);
-      const auto                   record_imposed = [&]() {
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            imposed_velocity[i] = world.body(ids[i]).linear_velocity;
-            imposed_angular[i] = world.body(ids[i]).angular_velocity;
-          }
-      };
-      // 'Force integral = stress and inertia': the flow at the start of the
-      // step, and the bodies' rigid accelerations over it
-      std::optional<typename fluid::NavierStokes<dim>::BlockVector> step_start;
-      const auto update_loads = [&](const double k) {
-        TimerOutput::Scope scope(timer, "fbm: forces");
-        loads = hydrodynamic_loads(flow, interface, load_centres);
-        if (particle_p.force_includes_fluid_inertia)
-          {
-            std::vector<RigidStepMotion> motion(n);
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                motion[i].centre           = load_centres[i];
-                motion[i].angular_velocity = imposed_angular[i];
-                if (k > 0.)
-                  {
-                    motion[i].acceleration
-                      = (imposed_velocity[i] - solved_velocity[i]) / k;
-                    motion[i].angular_acceleration
-                      = (imposed_angular[i] - solved_angular[i]) / k;
-                  }
-              }
-            const auto inertia
-              = fluid_inertia_loads(flow,
-                                    interface,
-                                    k > 0. ? *step_start : flow.get_solution(),
-                                    k,
-                                    motion);
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                loads[i].force += inertia[i].force;
-                loads[i].torque += inertia[i].torque;
-              }
-          }
-        add_mirror_images(loads, particle_p.symmetry_planes);
-      };
-      const auto impose_particle_velocities = [&]() {
-        TimerOutput::Scope scope(timer, "fbm: containment and constraints");
-        for (unsigned int i = 0; i < n; ++i)
-          load_centres[i] = world.body(ids[i]).position;
-        record_imposed();
-        interface.classify(interface_bodies);
-        flow.set_fictitious_boundary_values(
-          interface.constraint_values(interface_bodies));
-      };
-
-      // The interface a free particle shows the fluid over a step:
-      // 'Constraint velocity = extrapolated' gives the covered nodes
-      // U_n + k a_n, 'Interface position = midpoint' marks them around
-      // X_n + k/2 (U_n + k/2 a_n); the bodies themselves keep their state.
-      // The loads are then taken about the centres that were marked. It
-      // replaces the marking at X_n made at the end of the previous step
-      // (which the output at t_n shows); at the start of the step because
-      // only then is the step size k known.
-      const bool predict_interface
-        = free && !prescribed
-          && (particle_p.extrapolate_constraint_velocity
-              || particle_p.midpoint_interface_position);
-      const auto impose_predicted_interface = [&](const double k) {
-        TimerOutput::Scope scope(timer, "fbm: containment and constraints");
-        std::vector<
-          std::tuple<Eigen::Vector3d, Eigen::Vector3d, Eigen::Vector3d>>
-          current;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            rigid::RigidBody &b = world.body(ids[i]);
-            current.emplace_back(b.position,
-                                 b.linear_velocity,
-                                 b.angular_velocity);
-            if (particle_p.midpoint_interface_position)
-              b.position
-                += 0.5 * k * (b.linear_velocity + 0.5 * k * acceleration[i]);
-            if (particle_p.extrapolate_constraint_velocity)
-              {
-                b.linear_velocity += k * acceleration[i];
-                b.angular_velocity += k * angular_acceleration[i];
-              }
-            load_centres[i] = b.position;
-          }
-        if (particle_p.midpoint_interface_position)
-          interface.classify(interface_bodies);
-        auto values = interface.constraint_values(interface_bodies);
-        record_imposed();
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            rigid::RigidBody &b = world.body(ids[i]);
-            std::tie(b.position, b.linear_velocity, b.angular_velocity)
-              = current[i];
-          }
-        flow.set_fictitious_boundary_values(std::move(values));
-      };
-
-      core::ProgressReporter progress(
-        pcout.get_stream(),
+      Run               &r = *run_;
+      TimerOutput::Scope scope(r.timer, "checkpoint");
+      r.checkpoint.save(
+        [&](std::ostream &out) {
+          core::write_binary(out, t);
+          core::write_binary(out, dt);
+          core::write_binary<unsigned long>(out, step);
+          save_coupling_states(out, r.states);
+          r.flow->save_state(out);
+          r.world->save_state(out);
+          if (r.adapted_mesh)
+            r.adapted_mesh->save(out);
+          r.output.save(out);
+        },
         t,
-        time_p.scheme == core::TimeParameters::Scheme::steady ?
-          1. :
-          time_p.end_time);
-      const auto counts = [&](const fluid::SolveStatistics &s) {
-        char                   buffer[160];
-        const Eigen::Vector3d &u = world.body(ids[0]).linear_velocity;
-        std::snprintf(buffer,
-                      sizeof(buffer),
-                      "nonlinear %2u%s linear %4u  |U_0| %.5g m/s",
-                      s.nonlinear_iterations,
-                      s.used_fixed_point ? "*" : " ",
-                      s.linear_iterations,
-                      u.norm());
-        return std::string(buffer);
-      };
+        step);
+      // the continued run rebuilds its preconditioners here, as a
+      // restarted one must: both then compute the same numbers
+      r.flow->reset_preconditioners();
+      r.last_checkpoint = r.progress->elapsed_seconds();
+    }
 
-      // Moving particles on an adapted mesh, and prescribed motion: the
-      // mesh and the interface are updated at the start of each step.
-      const bool mesh_follows = adapted_mesh && !particle_p.motion_is_fixed();
-      // The start of every step: bodies at t_n (free) or t_n+1
-      // (prescribed) -> adapted mesh and its velocity -> interface.
-      const auto move_with_bodies = [&](const double t_new, const double k) {
-        if (prescribed)
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::read_checkpoint()
+    {
+      Run        &r      = *run_;
+      const auto &time_p = parameters.flow.time;
+      if (time_p.scheme == core::TimeParameters::Scheme::steady)
+        throw std::runtime_error(
+          parameter_file
+          + ": --restart continues time-dependent runs; this case is "
+            "steady.");
+      r.checkpoint.load([&](std::istream &in) {
+        t    = core::read_binary<double>(in);
+        dt   = core::read_binary<double>(in);
+        step = core::read_binary<unsigned long>(in);
+        load_coupling_states(in, r.states);
+        r.flow->load_state(in);
+        r.world->load_state(in);
+        if (r.adapted_mesh)
+          {
+            // the mesh velocity this sets is replaced before the next
+            // step uses one; the geometric matrices are what counts
+            r.flow->move_mesh([&]() { r.adapted_mesh->load(in); }, dt);
+            // V-cycles for the loaded positions, as the continued run
+            // has them after its checkpoint ('keep' would otherwise go
+            // on with those of the undeformed mesh)
+            r.flow->reset_preconditioners();
+            r.interface->setup();
+          }
+        r.output.load(in);
+      });
+      r.pcout << "Restarting from " << r.checkpoint.directory()
+              << " at t = " << t << " s (step " << step << ")" << std::endl;
+      // A fixed step comes from the parameter file: the checkpoint's may
+      // be a last step shortened to meet the old 'End time', and a user
+      // may have changed 'Time step' on purpose. An adaptive step goes
+      // on from where it was.
+      if (!time_p.adaptive && dt != time_p.time_step)
+        {
+          r.pcout << "Time step: " << time_p.time_step << " s from "
+                  << parameter_file
+                  << " (the checkpointed run's last step: " << dt << " s)"
+                  << std::endl;
+          dt = time_p.time_step;
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::record(const double k)
+    {
+      Run                             &r = *run_;
+      TimerOutput::Scope               scope(r.timer, "diagnostics");
+      const std::vector<unsigned long> nodes_inside
+        = r.interface->n_nodes_inside(r.ids.size());
+      std::vector<BodyRecord> rows;
+      double                  particles_energy = 0.;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        {
+          BodyRecord row;
+          row.body = &r.world->body(r.ids[i]);
+          row.load = r.states[i].fluid_load;
+          if (t > 0.)
+            for (const auto &f : r.world->contact_forces(r.ids[i]))
+              row.contact_force += f.force;
+          row.kinetic_energy = r.rigid_update.kinetic_energy(*row.body);
+          row.nodes_inside   = nodes_inside[i];
+          particles_energy += row.kinetic_energy;
+          r.states[i].record_speed(row.body->linear_velocity.norm(), t);
+          rows.push_back(row);
+        }
+      r.output.record_bodies(t, rows);
+      r.output.record_flow(t,
+                           r.n_images * fluid::kinetic_energy(*r.flow),
+                           particles_energy,
+                           r.statistics,
+                           k);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::record_imposed()
+    {
+      Run &r = *run_;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        {
+          const rigid::RigidBody &b    = r.world->body(r.ids[i]);
+          r.states[i].imposed_velocity = b.linear_velocity;
+          r.states[i].imposed_angular  = b.angular_velocity;
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::impose_body_velocities()
+    {
+      Run               &r = *run_;
+      TimerOutput::Scope scope(r.timer, "fbm: containment and constraints");
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        r.states[i].load_centre = r.world->body(r.ids[i]).position;
+      record_imposed();
+      r.interface->classify(r.interface_bodies);
+      r.flow->set_fictitious_boundary_values(
+        r.interface->constraint_values(r.interface_bodies));
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::impose_predicted_interface(const double k)
+    {
+      // It replaces the marking at X_n made at the end of the previous step
+      // (which the output at t_n shows); at the start of the step because
+      // only then is the step size k known. The loads are then taken about
+      // the centres that were marked.
+      Run               &r          = *run_;
+      const auto        &particle_p = parameters.particles;
+      TimerOutput::Scope scope(r.timer, "fbm: containment and constraints");
+      std::vector<std::tuple<Eigen::Vector3d, Eigen::Vector3d, Eigen::Vector3d>>
+        current;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        {
+          rigid::RigidBody        &b = r.world->body(r.ids[i]);
+          const BodyCouplingState &s = r.states[i];
+          current.emplace_back(b.position,
+                               b.linear_velocity,
+                               b.angular_velocity);
+          if (particle_p.midpoint_interface_position)
+            b.position
+              += 0.5 * k * (b.linear_velocity + 0.5 * k * s.acceleration);
+          if (particle_p.extrapolate_constraint_velocity)
+            {
+              b.linear_velocity += k * s.acceleration;
+              b.angular_velocity += k * s.angular_acceleration;
+            }
+          r.states[i].load_centre = b.position;
+        }
+      if (particle_p.midpoint_interface_position)
+        r.interface->classify(r.interface_bodies);
+      auto values = r.interface->constraint_values(r.interface_bodies);
+      record_imposed();
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        {
+          rigid::RigidBody &b = r.world->body(r.ids[i]);
+          std::tie(b.position, b.linear_velocity, b.angular_velocity)
+            = current[i];
+        }
+      r.flow->set_fictitious_boundary_values(std::move(values));
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::move_mesh(const double k)
+    {
+      Run         &r     = *run_;
+      const double t_new = t + k;
+      if (r.prescribed)
+        for (unsigned int i = 0; i < r.ids.size(); ++i)
+          {
+            rigid::RigidBody &b = r.world->body(r.ids[i]);
+            std::tie(b.position, b.linear_velocity)
+              = r.prescribed->state(parameters.particles.positions[i], t_new);
+          }
+      if (!r.mesh_follows)
+        return;
+      deformation::DeformationReport report;
+      {
+        TimerOutput::Scope          scope(r.timer, "mesh deformation");
+        std::vector<geometry::Pose> poses;
+        for (const auto id : r.ids)
+          poses.emplace_back(r.world->body(id).orientation,
+                             r.world->body(id).position);
+        report = r.adapted_mesh->follow(poses, *r.flow, k);
+      }
+      r.output.record_mesh(t_new, report);
+      TimerOutput::Scope scope(r.timer, "fbm: containment and constraints");
+      r.interface->setup();
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::impose_interface(const double k)
+    {
+      // bodies that moved before the step (prescribed, or carrying the
+      // mesh) are marked where the step starts; the others were marked at
+      // the end of the step before
+      if (run_->prescribed || run_->mesh_follows)
+        impose_body_velocities();
+      if (run_->predict_interface)
+        impose_predicted_interface(k);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::advance_fluid(const double k)
+    {
+      Run &r = *run_;
+      if (parameters.particles.force_includes_fluid_inertia)
+        r.step_start = r.flow->get_solution();
+      r.statistics = r.flow->advance(t, k, parameters.flow.time.scheme);
+      r.summary.nonlinear_iterations += r.statistics.nonlinear_iterations;
+      r.summary.linear_iterations += r.statistics.linear_iterations;
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::compute_loads(const double k)
+    {
+      // from the new flow field, with the interface the fluid saw over the
+      // step, completed across mirror planes
+      Run                         &r = *run_;
+      TimerOutput::Scope           scope(r.timer, "fbm: forces");
+      const unsigned int           n = r.ids.size();
+      std::vector<Eigen::Vector3d> centres;
+      for (const auto &s : r.states)
+        centres.push_back(s.load_centre);
+      std::vector<HydrodynamicLoad> loads
+        = hydrodynamic_loads(*r.flow, *r.interface, centres);
+      if (parameters.particles.force_includes_fluid_inertia)
+        {
+          std::vector<RigidStepMotion> motion(n);
           for (unsigned int i = 0; i < n; ++i)
             {
-              rigid::RigidBody &b = world.body(ids[i]);
-              std::tie(b.position, b.linear_velocity)
-                = prescribed_state(particle_p.positions[i], t_new);
-            }
-        if (mesh_follows)
-          {
-            deformation::DeformationReport report;
-            {
-              TimerOutput::Scope          scope(timer, "mesh deformation");
-              std::vector<geometry::Pose> poses;
-              for (const auto id : ids)
-                poses.emplace_back(world.body(id).orientation,
-                                   world.body(id).position);
-              report = adapted_mesh->follow(poses, flow, k);
-            }
-            record_mesh(t_new, report);
-            TimerOutput::Scope scope(timer, "fbm: containment and constraints");
-            interface.setup();
-          }
-        if (prescribed || mesh_follows)
-          impose_particle_velocities();
-      };
-
-      impose_particle_velocities();
-      if (!parameters.restart)
-        {
-          solved_velocity = imposed_velocity;
-          solved_angular  = imposed_angular;
-          record_mesh(0., initial_report);
-          record(0., dt, fluid::SolveStatistics());
-          write_fields(0, 0.);
-        }
-      const auto &checkpoint_p    = parameters.checkpoint;
-      double      last_checkpoint = 0.; // wall seconds
-      const auto  checkpoint_due  = [&](const bool last) {
-        if (!checkpoint_p.enabled())
-          return false;
-        // rank 0's clock decides, so that all ranks agree
-        const double minutes
-          = Utilities::MPI::broadcast(communicator,
-                                      progress.elapsed_seconds()
-                                        - last_checkpoint,
-                                      0)
-            / 60.;
-        return last
-               || (checkpoint_p.step_interval > 0
-                   && step % checkpoint_p.step_interval == 0)
-               || (checkpoint_p.wall_minutes > 0.
-                   && minutes >= checkpoint_p.wall_minutes);
-      };
-
-      if (time_p.scheme == core::TimeParameters::Scheme::steady)
-        {
-          // fixed obstacles in steady flow: one nonlinear solve
-          const auto stats
-            = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
-          update_loads(0.);
-          step = 1;
-          record(0., 0., stats);
-          write_fields(1, 0.);
-          if (pcout.is_active())
-            progress.report(1, 1., 0., counts(stats));
-        }
-      else
-        {
-          const double eps = 1e-12 * std::max(1., time_p.end_time);
-          while (t < time_p.end_time - eps)
-            {
-              dt = std::min(dt, time_p.end_time - t);
-              // everything of a step but output and diagnostics
-              std::optional<TimerOutput::Scope> step_scope;
-              step_scope.emplace(timer, "coupled step (total)");
-              const auto step_start_time = std::chrono::steady_clock::now();
-              move_with_bodies(t + dt, dt);
-              if (predict_interface)
-                impose_predicted_interface(dt);
-              if (particle_p.force_includes_fluid_inertia)
-                step_start = flow.get_solution();
-              // 1.-2. fluid with the particles' interface of this step
-              const fluid::SolveStatistics stats
-                = flow.advance(t, dt, time_p.scheme);
-              summary.nonlinear_iterations += stats.nonlinear_iterations;
-              summary.linear_iterations += stats.linear_iterations;
-              // 3. loads from the new flow field, with the interface the
-              //    fluid saw over the step
-              update_loads(dt);
-              solved_velocity = imposed_velocity;
-              solved_angular  = imposed_angular;
-              // 4. rigid bodies
-              {
-                TimerOutput::Scope           scope(timer, "rigid bodies");
-                std::vector<Eigen::Vector3d> old_velocity(n),
-                  old_angular_velocity(n), old_position(n);
-                std::vector<Eigen::Quaterniond> old_orientation(n);
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    rigid::RigidBody &b     = world.body(ids[i]);
-                    old_velocity[i]         = b.linear_velocity;
-                    old_angular_velocity[i] = b.angular_velocity;
-                    old_position[i]         = b.position;
-                    old_orientation[i]      = b.orientation;
-                    if (!free)
-                      continue;
-                    const double    m_true = rho_p * volume;
-                    const double    m_a    = b.mass() - m_true;
-                    Eigen::Vector3d force
-                      = loads[i].force
-                        + (rho_p - rho_f) * volume * particle_p.gravity
-                        + m_a * acceleration[i];
-                    const Eigen::Matrix3d I_a
-                      = b.inertia_world() - true_inertia_world(b);
-                    Eigen::Vector3d torque
-                      = loads[i].torque + I_a * angular_acceleration[i];
-                    for (unsigned int d = 0; d < 3; ++d)
-                      {
-                        if (particle_p.locked_translation[d])
-                          force[d] = 0.;
-                        if (particle_p.locked_rotation[d])
-                          torque[d] = 0.;
-                      }
-                    world.set_external_force_and_torque(ids[i], force, torque);
-                  }
-                world.step(dt);
-                for (unsigned int i = 0; i < n && free; ++i)
-                  {
-                    rigid::RigidBody &b = world.body(ids[i]);
-                    // symmetry and planar motion: undo what contacts or
-                    // rounding did along the locked axes
-                    for (unsigned int d = 0; d < 3; ++d)
-                      {
-                        if (particle_p.locked_translation[d])
-                          {
-                            b.linear_velocity[d] = 0.;
-                            b.position[d]        = old_position[i][d];
-                          }
-                        if (particle_p.locked_rotation[d])
-                          b.angular_velocity[d] = 0.;
-                      }
-                    if (particle_p.locked_rotation[0]
-                        && particle_p.locked_rotation[1]
-                        && particle_p.locked_rotation[2])
-                      b.orientation = old_orientation[i];
-                    if (!b.linear_velocity.allFinite()
-                        || !b.position.allFinite())
-                      throw std::runtime_error(
-                        "Particle " + std::to_string(i)
-                        + " has a non-finite velocity at t = "
-                        + std::to_string(t + dt)
-                        + " s: the coupling diverged. Reduce 'Time step' in "
-                          "subsection 'Time' or raise 'Added mass "
-                          "coefficient' in subsection 'Particles'.");
-                    acceleration[i]
-                      = (b.linear_velocity - old_velocity[i]) / dt;
-                    angular_acceleration[i]
-                      = (b.angular_velocity - old_angular_velocity[i]) / dt;
-                    // A contact that stops the particle stops its added
-                    // mass too. Fed back as m_a a_old, that deceleration
-                    // would throw the particle off the wall next step (a
-                    // bounce at restitution 0): the lag keeps no
-                    // acceleration away from a touching surface.
-                    for (const auto &f : world.contact_forces(ids[i]))
-                      if (f.force.norm() > 0.)
-                        {
-                          const Eigen::Vector3d n = f.force.normalized();
-                          const double          a = acceleration[i].dot(n);
-                          if (a > 0.)
-                            acceleration[i] -= a * n;
-                        }
-                  }
-              }
-              t += dt;
-              ++step;
-              // 1. (next step) the interface at t_n+1
-              if (!(prescribed || mesh_follows))
-                impose_particle_velocities();
-              step_scope.reset();
-              summary.step_seconds.push_back(
-                std::chrono::duration<double>(std::chrono::steady_clock::now()
-                                              - step_start_time)
-                  .count());
-              record(t, dt, stats);
-              const bool last = t >= time_p.end_time - eps;
-              if ((flow_p.output.interval > 0
-                   && step % flow_p.output.interval == 0)
-                  || last)
-                write_fields(step, t);
-              if (pcout.is_active())
-                progress.report(step, t, dt, counts(stats));
-              if (time_p.adaptive)
-                dt = time_p.next_time_step(dt, flow.cfl_number(dt));
-              if (checkpoint_due(last))
+              const BodyCouplingState &s = r.states[i];
+              motion[i].centre           = s.load_centre;
+              motion[i].angular_velocity = s.imposed_angular;
+              if (k > 0.)
                 {
-                  save_checkpoint();
-                  last_checkpoint = progress.elapsed_seconds();
+                  motion[i].acceleration
+                    = (s.imposed_velocity - s.solved_velocity) / k;
+                  motion[i].angular_acceleration
+                    = (s.imposed_angular - s.solved_angular) / k;
                 }
             }
+          const auto inertia
+            = fluid_inertia_loads(*r.flow,
+                                  *r.interface,
+                                  k > 0. ? *r.step_start :
+                                           r.flow->get_solution(),
+                                  k,
+                                  motion);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              loads[i].force += inertia[i].force;
+              loads[i].torque += inertia[i].torque;
+            }
         }
+      add_mirror_images(loads, parameters.particles.symmetry_planes);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          r.states[i].fluid_load = loads[i];
+          r.states[i].mark_solved();
+        }
+    }
 
-      summary.n_steps      = step;
-      summary.end_time     = t;
-      summary.wall_seconds = progress.elapsed_seconds();
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::advance_bodies(const double k)
+    {
+      Run &r = *run_;
+      {
+        TimerOutput::Scope scope(r.timer, "rigid bodies");
+        r.rigid_update.advance(*r.world, r.ids, r.states, k, t + k);
+      }
+      t += k;
+      ++step;
+      // bodies that do not move before a step are marked where it ends:
+      // the interface of the next step, which the output at t_n+1 shows
+      if (!(r.prescribed || r.mesh_follows))
+        impose_body_velocities();
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::write_output(const double k)
+    {
+      Run &r = *run_;
+      record(k);
+      const auto &output_p = parameters.flow.output;
+      if ((output_p.interval > 0 && step % output_p.interval == 0)
+          || at_end_time())
+        {
+          TimerOutput::Scope scope(r.timer, "output");
+          r.output.write_fields(*r.flow, *r.world, step, t);
+        }
+      if (r.pcout.is_active())
+        r.progress->report(step, t, k, counts());
+    }
+
+
+
+    template <int dim>
+    bool
+    ParticulateFlowSimulation<dim>::checkpoint_due() const
+    {
+      const auto &checkpoint_p = parameters.checkpoint;
+      if (!checkpoint_p.enabled())
+        return false;
+      // rank 0's clock decides, so that all ranks agree
+      const double minutes
+        = Utilities::MPI::broadcast(communicator,
+                                    run_->progress->elapsed_seconds()
+                                      - run_->last_checkpoint,
+                                    0)
+          / 60.;
+      return at_end_time()
+             || (checkpoint_p.step_interval > 0
+                 && step % checkpoint_p.step_interval == 0)
+             || (checkpoint_p.wall_minutes > 0.
+                 && minutes >= checkpoint_p.wall_minutes);
+    }
+
+
+
+    template <int dim>
+    bool
+    ParticulateFlowSimulation<dim>::at_end_time() const
+    {
+      const double end = parameters.flow.time.end_time;
+      return t >= end - 1e-12 * std::max(1., end);
+    }
+
+
+
+    template <int dim>
+    std::string
+    ParticulateFlowSimulation<dim>::counts() const
+    {
+      const fluid::SolveStatistics &s = run_->statistics;
+      char                          buffer[160];
+      const Eigen::Vector3d        &u
+        = run_->world->body(run_->ids[0]).linear_velocity;
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "nonlinear %2u%s linear %4u  |U_0| %.5g m/s",
+                    s.nonlinear_iterations,
+                    s.used_fixed_point ? "*" : " ",
+                    s.linear_iterations,
+                    u.norm());
+      return std::string(buffer);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::solve_steady()
+    {
+      // fixed obstacles in steady flow: one nonlinear solve
+      Run &r = *run_;
+      r.statistics
+        = r.flow->advance(0., 0., core::TimeParameters::Scheme::steady);
+      compute_loads(0.);
+      step = 1;
+      record(0.);
+      {
+        TimerOutput::Scope scope(r.timer, "output");
+        r.output.write_fields(*r.flow, *r.world, 1, 0.);
+      }
+      if (r.pcout.is_active())
+        r.progress->report(1, 1., 0., counts());
+    }
+
+
+
+    template <int dim>
+    ParticulateFlowSummary
+    ParticulateFlowSimulation<dim>::summarise()
+    {
+      Run                    &r       = *run_;
+      ParticulateFlowSummary &summary = r.summary;
+      summary.n_steps                 = step;
+      summary.end_time                = t;
+      summary.wall_seconds            = r.progress->elapsed_seconds();
       MPI_Allreduce(MPI_IN_PLACE,
                     summary.step_seconds.data(),
                     static_cast<int>(summary.step_seconds.size()),
                     MPI_DOUBLE,
                     MPI_MAX,
                     communicator);
-      for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
         {
-          const rigid::RigidBody &b = world.body(ids[i]);
+          const rigid::RigidBody &b = r.world->body(r.ids[i]);
           summary.position.push_back(b.position);
           summary.velocity.push_back(b.linear_velocity);
-          summary.force.push_back(loads[i].force);
-          summary.torque.push_back(loads[i].torque);
+          summary.force.push_back(r.states[i].fluid_load.force);
+          summary.torque.push_back(r.states[i].fluid_load.torque);
+          summary.max_speed.push_back(r.states[i].max_speed);
+          summary.time_of_max_speed.push_back(r.states[i].time_of_max_speed);
         }
-      pcout << "\nFinal: particle 0 at (" << summary.position[0].transpose()
-            << ") m, velocity (" << summary.velocity[0].transpose()
-            << ") m/s, fluid force (" << summary.force[0].transpose()
-            << ") N\nResults are in " << dir
-            << "/ (flow.pvd, particles.pvd, particle_*.dat, flow.dat)"
-            << std::endl;
-      timer.print_wall_time_statistics(communicator);
-      fluid::collect_run_profile(timer, flow, communicator, summary);
+      r.pcout << "\nFinal: particle 0 at (" << summary.position[0].transpose()
+              << ") m, velocity (" << summary.velocity[0].transpose()
+              << ") m/s, fluid force (" << summary.force[0].transpose()
+              << ") N\nResults are in " << r.output.directory()
+              << "/ (flow.pvd, particles.pvd, particle_*.dat, flow.dat)"
+              << std::endl;
+      r.timer.print_wall_time_statistics(communicator);
+      fluid::collect_run_profile(r.timer, *r.flow, communicator, summary);
       if (flow_inspector)
-        flow_inspector(flow);
+        flow_inspector(*r.flow);
       return summary;
+    }
+
+    template <int dim>
+    const rigid::World &
+    ParticulateFlowSimulation<dim>::world() const
+    {
+      return *run_->world;
+    }
+
+
+
+    template <int dim>
+    const std::vector<unsigned int> &
+    ParticulateFlowSimulation<dim>::body_ids() const
+    {
+      return run_->ids;
+    }
+
+
+
+    template <int dim>
+    const std::vector<BodyCouplingState> &
+    ParticulateFlowSimulation<dim>::coupling_states() const
+    {
+      return run_->states;
+    }
+
+
+
+    template <int dim>
+    std::vector<unsigned long>
+    ParticulateFlowSimulation<dim>::n_covered_nodes() const
+    {
+      return run_->interface->n_nodes_inside(run_->ids.size());
+    }
+
+
+
+    template <int dim>
+    double
+    ParticulateFlowSimulation<dim>::fluid_kinetic_energy() const
+    {
+      return fluid::kinetic_energy(*run_->flow);
     }
 
     template class ParticulateFlowSimulation<2>;

@@ -2,6 +2,7 @@
 #define particulate_fbm_hydrodynamic_forces_h
 
 #include <particulate/fbm/fictitious_boundary.h>
+#include <particulate/fbm/hydrodynamic_load.h>
 #include <particulate/fluid/navier_stokes.h>
 
 #include <Eigen/Core>
@@ -11,14 +12,6 @@
 
 namespace particulate {
   namespace fbm {
-    /** Force [N] and torque [N m] of the fluid on one body (per unit depth
-     *  in 2D, where the torque is along z). */
-    struct HydrodynamicLoad
-    {
-      Eigen::Vector3d force  = Eigen::Vector3d::Zero();
-      Eigen::Vector3d torque = Eigen::Vector3d::Zero();
-    };
-
     /**
      * Hydrodynamic force and torque on every body by the volume integrals of
      * thesis eq. 5.12-5.13,

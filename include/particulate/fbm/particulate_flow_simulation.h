@@ -3,6 +3,7 @@
 
 #include <particulate/core/checkpoint.h>
 #include <particulate/deformation/deformation_parameters.h>
+#include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/fluid/flow_simulation.h>
 #include <particulate/fluid/run_profile.h>
@@ -22,6 +23,9 @@ namespace particulate {
   namespace fluid {
     template <int dim>
     class NavierStokes;
+  }
+  namespace rigid {
+    class World;
   }
   namespace fbm {
     /** Everything a `Simulation / Type = particulate flow` case reads. */
@@ -74,29 +78,33 @@ namespace particulate {
 
     /**
      * The coupled time loop of the fictitious boundary method (thesis
-     * §5.3): per time step t_n -> t_n+1
-     *  1. mark the velocity nodes inside the particles at t_n and impose
-     *     u = U + omega x (x - X) there (eq. 5.17);
-     *  2. advance the fluid (fractional-step theta, eq. 5.14);
-     *  3. hydrodynamic force and torque by the volume integrals (eq. 5.13);
-     *  4. advance the rigid bodies with the fluid loads, buoyancy-corrected
-     *     gravity and contacts (eq. 5.3) in the rigid-body engine, where the
-     *     domain walls are fixed half-spaces.
-     * The explicit coupling is stabilised for light particles by an
-     * added-mass correction (doc/fbm.md).
+     * §5.3). run() is set_up() and then, per time step t_n -> t_n+1, the
+     * stages
+     *  1. move_mesh(): prescribed bodies to t_n+1; the adapted mesh follows
+     *     the bodies, its velocity entering the flow's ALE term;
+     *  2. impose_interface(): mark the velocity nodes inside the bodies and
+     *     impose u = U + omega x (x - X) there (eq. 5.17);
+     *  3. advance_fluid(): fractional-step theta (eq. 5.14);
+     *  4. compute_loads(): hydrodynamic force and torque by the volume
+     *     integrals (eq. 5.13);
+     *  5. advance_bodies(): the rigid engine moves the bodies with the
+     *     fluid loads, buoyancy-corrected gravity and contacts (eq. 5.3;
+     *     RigidBodyUpdate), the domain walls being fixed half-spaces; bodies
+     *     that do not move before a step are marked at t_n+1;
+     *  6. write_output(): the time series, the ParaView output and the
+     *     progress line;
+     *  7. write_checkpoint() when one is due.
+     * The stages are public so that a test can drive a step stage by
+     * stage.
      *
-     * With subsection `Mesh deformation` the mesh is adapted to the
-     * particles (BodyAdaptedMesh) before the run, and when they move, at
-     * the start of every step, its velocity entering the flow's ALE term;
-     * `<output>/mesh.dat` logs the mesh quality. Prescribed particles
-     * (`Motion = prescribed`) are moved to t_n+1 first, so the fluid step
-     * sees them where they end it.
-     *
-     * With subsection `Checkpoint` set, the run saves its state (fluid
-     * solution, bodies with their contact cache, the coupling's added-mass
-     * accelerations and loads, time step, output series) into
-     * `<output>/checkpoint/`; with `restart` it continues from there and
-     * computes the same numbers as the uninterrupted run.
+     * With subsection `Mesh deformation` the mesh is adapted to the bodies
+     * (BodyAdaptedMesh) before the run, and when they move, at the start of
+     * every step; `<output>/mesh.dat` logs the mesh quality. With
+     * subsection `Checkpoint` set, the run saves its state (fluid solution,
+     * bodies with their contact cache, each body's BodyCouplingState, time
+     * step, output series) into `<output>/checkpoint/`; with `restart` it
+     * continues from there and computes the same numbers as the
+     * uninterrupted run.
      */
     template <int dim>
     class ParticulateFlowSimulation
@@ -105,7 +113,9 @@ namespace particulate {
       ParticulateFlowSimulation(const ParticulateFlowParameters &parameters,
                                 const std::string               &parameter_file,
                                 MPI_Comm                         comm);
+      ~ParticulateFlowSimulation();
 
+      /** set_up(), every step's stages, and the summary. */
       ParticulateFlowSummary
       run();
 
@@ -120,11 +130,141 @@ namespace particulate {
         flow_inspector = std::move(inspector);
       }
 
+      /** @name Set-up and the stages of a coupled step */
+      /** @{ */
+      /** Mesh, adapted mesh, flow solver, bodies, interface, output; the
+       *  checkpoint's state with `restart`; the interface and the first
+       *  output at t = 0. */
+      void
+      set_up();
+
+      /** Stage 1 of a step of size @p k: prescribed bodies to t_n+1, and
+       *  the adapted mesh after the bodies. */
+      void
+      move_mesh(const double k);
+
+      /** Stage 2: the covered nodes and their rigid velocities. */
+      void
+      impose_interface(const double k);
+
+      /** Stage 3: the fluid over the step. */
+      void
+      advance_fluid(const double k);
+
+      /** Stage 4: the fluid's loads on the bodies. */
+      void
+      compute_loads(const double k);
+
+      /** Stage 5: the bodies over the step. The run is then at t_n+1, and
+       *  bodies that do not move before a step are marked there. */
+      void
+      advance_bodies(const double k);
+
+      /** Stage 6: the time series, the fields when due, the progress line. */
+      void
+      write_output(const double k);
+
+      /** Stage 7: save the state into the output folder's checkpoint. */
+      void
+      write_checkpoint();
+      /** @} */
+
+      /** @name What the stages leave behind (for tests and inspection) */
+      /** @{ */
+      /** The time the run has reached [s]. */
+      double
+      time() const
+      {
+        return t;
+      }
+
+      /** The number of steps taken. */
+      unsigned int
+      step_number() const
+      {
+        return step;
+      }
+
+      /** The rigid engine with the particles and the walls. */
+      const rigid::World &
+      world() const;
+
+      /** The particles' ids in world(), in the order of the case file. */
+      const std::vector<unsigned int> &
+      body_ids() const;
+
+      /** What the coupling carries for each particle. */
+      const std::vector<BodyCouplingState> &
+      coupling_states() const;
+
+      /** The velocity nodes each particle covers now (collective). */
+      std::vector<unsigned long>
+      n_covered_nodes() const;
+
+      /** The fluid's kinetic energy in the mesh [J] (collective). */
+      double
+      fluid_kinetic_energy() const;
+      /** @} */
+
     private:
+      struct Run;
+
+      /** @name Parts of set_up() */
+      /** @{ */
+      void
+      create_mesh();
+      void
+      adapt_mesh_to_bodies();
+      void
+      add_bodies();
+      void
+      set_up_interface();
+      void
+      read_checkpoint();
+      /** @} */
+
+      /** Mark the nodes around the bodies' current poses and give them the
+       *  bodies' velocities. */
+      void
+      impose_body_velocities();
+      /** The interface a free body shows the fluid over a step of size
+       *  @p k: 'Constraint velocity = extrapolated' gives the covered nodes
+       *  U_n + k a_n, 'Interface position = midpoint' marks them around
+       *  X_n + k/2 (U_n + k/2 a_n); the bodies keep their state. */
+      void
+      impose_predicted_interface(const double k);
+      /** The imposed velocities are the bodies' current ones. */
+      void
+      record_imposed();
+      /** A row of every time series at time t, after a step of size @p k
+       *  (with the last solve's counts). */
+      void
+      record(const double k);
+      /** Whether the run has reached its 'End time' (to rounding). */
+      bool
+      at_end_time() const;
+      /** Whether a checkpoint is due after this step: at the end, and
+       *  every 'Step interval' steps or 'Wall-time interval' minutes. */
+      bool
+      checkpoint_due() const;
+      /** The progress line's counts of the last solve. */
+      std::string
+      counts() const;
+      /** Time steps of a steady case: one nonlinear solve. */
+      void
+      solve_steady();
+      ParticulateFlowSummary
+      summarise();
+
       std::function<void(const fluid::NavierStokes<dim> &)> flow_inspector;
       const ParticulateFlowParameters                      &parameters;
       const std::string                                     parameter_file;
       MPI_Comm                                              communicator;
+      /// everything the run holds (mesh, solvers, bodies, output)
+      std::unique_ptr<Run> run_;
+      double               t    = 0.;
+      double               dt   = 0.;
+      unsigned int         step = 0;
     };
   } // namespace fbm
 } // namespace particulate

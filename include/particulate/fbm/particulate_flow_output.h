@@ -1,0 +1,120 @@
+#ifndef particulate_fbm_particulate_flow_output_h
+#define particulate_fbm_particulate_flow_output_h
+
+#include <particulate/core/simulation_parameters.h>
+#include <particulate/core/time_series_writer.h>
+#include <particulate/deformation/moving_mesh.h>
+#include <particulate/fbm/hydrodynamic_load.h>
+#include <particulate/fluid/flow_output.h>
+#include <particulate/fluid/navier_stokes.h>
+#include <particulate/rigid/vtp_writer.h>
+#include <particulate/rigid/world.h>
+
+#include <iosfwd>
+#include <memory>
+#include <vector>
+
+#include <mpi.h>
+
+namespace particulate {
+  namespace fbm {
+    /** One body's row of `particle_<i>.dat`. */
+    struct BodyRecord
+    {
+      const rigid::RigidBody *body = nullptr;
+      HydrodynamicLoad        load;
+      /// the sum of the contact forces on the body over the step [N]
+      Eigen::Vector3d contact_force = Eigen::Vector3d::Zero();
+      /// with the true mass and inertia [J]
+      double        kinetic_energy = 0.;
+      unsigned long nodes_inside   = 0;
+    };
+
+    /**
+     * What a particulate-flow run writes into its output folder: the time
+     * series `particle_<i>.dat` (one per body: pose, velocities, loads,
+     * contact force, kinetic energy, covered nodes), `flow.dat` (kinetic
+     * energies, iteration counts, time step) and, on an adapted mesh,
+     * `mesh.dat` (its quality); and the ParaView series `flow.pvd` and
+     * `particles.pvd`.
+     *
+     * A restart continues every series: the ParaView files listed in the
+     * checkpoint (save(), load()), and the `.dat` files without the rows
+     * that the cut-off run wrote after its checkpoint.
+     */
+    template <int dim>
+    class ParticulateFlowOutput
+    {
+    public:
+      /** Nothing is written yet. */
+      ParticulateFlowOutput(const core::OutputParameters &parameters,
+                            MPI_Comm                      comm);
+
+      /**
+       * Open the `.dat` series for @p n_bodies bodies (and `mesh.dat` with
+       * @p adapted_mesh); with @p restart continue them from time
+       * @p time, dropping later rows.
+       */
+      void
+      open_time_series(const unsigned int n_bodies,
+                       const bool         adapted_mesh,
+                       const bool         restart,
+                       const double       time);
+
+      /** A row of `mesh.dat` (nothing without an adapted mesh). */
+      void
+      record_mesh(const double                          time,
+                  const deformation::DeformationReport &report);
+
+      /** A row of each `particle_<i>.dat`, one record per body. */
+      void
+      record_bodies(const double time, const std::vector<BodyRecord> &bodies);
+
+      /** A row of `flow.dat`. */
+      void
+      record_flow(const double                  time,
+                  const double                  fluid_kinetic_energy,
+                  const double                  particle_kinetic_energy,
+                  const fluid::SolveStatistics &statistics,
+                  const double                  time_step);
+
+      /** The fields at @p step, @p time, if the case writes them. */
+      void
+      write_fields(const fluid::NavierStokes<dim> &flow,
+                   const rigid::World             &world,
+                   const unsigned int              step,
+                   const double                    time);
+
+      /** The ParaView series written so far, for a checkpoint. */
+      void
+      save(std::ostream &out) const;
+
+      /** Continue the ParaView series that save() wrote. */
+      void
+      load(std::istream &in);
+
+      const std::string &
+      directory() const
+      {
+        return parameters.directory;
+      }
+
+    private:
+      /** The path of the series @p name, cut at @p time on a restart. */
+      std::string
+      series_file(const std::string &name,
+                  const bool         restart,
+                  const double       time) const;
+
+      const core::OutputParameters                         parameters;
+      MPI_Comm                                             communicator;
+      fluid::FlowOutput<dim>                               flow_output;
+      rigid::VtpWriter                                     body_output;
+      std::vector<std::unique_ptr<core::TimeSeriesWriter>> body_series;
+      std::unique_ptr<core::TimeSeriesWriter>              mesh_series;
+      std::unique_ptr<core::TimeSeriesWriter>              flow_series;
+    };
+  } // namespace fbm
+} // namespace particulate
+
+#endif

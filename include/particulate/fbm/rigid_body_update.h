@@ -1,0 +1,102 @@
+#ifndef particulate_fbm_rigid_body_update_h
+#define particulate_fbm_rigid_body_update_h
+
+#include <particulate/fbm/body_coupling_state.h>
+#include <particulate/fbm/particle_parameters.h>
+#include <particulate/rigid/world.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace particulate {
+  namespace fbm {
+    /**
+     * The bodies' half of a coupled step (thesis §5.3 step 4, eq. 5.3):
+     * the fluid's loads, buoyancy-corrected gravity and contacts move the
+     * free bodies in the rigid engine.
+     *
+     * The explicit coupling is stabilised by an added-mass correction: the
+     * engine integrates each body with the mass m + m_a and the inertia
+     * I + I_a (its material density is rho_p + C rho_f), and the force gets
+     * m_a a_n, the torque I_a alpha_n, with the accelerations of the step
+     * before. Where the loads do not change, the accelerations converge to
+     * those of the true mass geometrically, with the ratio m_a / (m + m_a).
+     *
+     * Locked axes (symmetry planes, planar motion) get no force or torque,
+     * and what contacts or rounding did along them is undone. A contact
+     * that stops a body stops its added mass too: the component of the
+     * acceleration into a touching surface is dropped, which would
+     * otherwise, fed back as m_a a_n, throw the body off the wall in the
+     * next step.
+     */
+    class RigidBodyUpdate
+    {
+    public:
+      /**
+       * @param particles the particles' density, gravity, motion and locked
+       *   axes
+       * @param fluid_density rho_f [kg/m^3]
+       */
+      RigidBodyUpdate(const ParticleParameters &particles,
+                      const double              fluid_density);
+
+      /**
+       * Advance @p world by @p time_step with the loads of @p states (one
+       * per body of @p ids) and store each free body's new accelerations
+       * there. Bodies that are not free only see the engine step.
+       * @param time the time the step ends at, for messages [s]
+       * @throw std::runtime_error if a body's state is no longer finite
+       */
+      void
+      advance(rigid::World                     &world,
+              const std::vector<rigid::BodyId> &ids,
+              std::vector<BodyCouplingState>   &states,
+              const double                      time_step,
+              const double                      time) const;
+
+      /** The true mass of @p body, rho_p V [kg] (the engine's includes
+       *  the added mass, or is infinite for a body that does not move). */
+      double
+      true_mass(const rigid::RigidBody &body) const;
+
+      /** Its true inertia tensor in the world frame [kg m^2]. */
+      Eigen::Matrix3d
+      true_inertia_world(const rigid::RigidBody &body) const;
+
+      /** Its kinetic energy with the true mass and inertia [J]. */
+      double
+      kinetic_energy(const rigid::RigidBody &body) const;
+
+    private:
+      /** Force and torque the engine gets for @p body over the step. */
+      void
+      apply_loads(rigid::World            &world,
+                  const rigid::BodyId      id,
+                  const BodyCouplingState &state) const;
+
+      /** Undo motion along the locked axes, from the pose before the
+       *  step. */
+      void
+      restore_locked_axes(rigid::RigidBody         &body,
+                          const Eigen::Vector3d    &old_position,
+                          const Eigen::Quaterniond &old_orientation) const;
+
+      /** Drop the acceleration's components into touching surfaces. */
+      static void
+      clip_against_contacts(const rigid::World &world,
+                            const rigid::BodyId id,
+                            Eigen::Vector3d    &acceleration);
+
+      double              particle_density;
+      double              fluid_density;
+      Eigen::Vector3d     gravity;
+      bool                free;
+      std::array<bool, 3> locked_translation;
+      std::array<bool, 3> locked_rotation;
+    };
+  } // namespace fbm
+} // namespace particulate
+
+#endif

@@ -1,0 +1,189 @@
+#include <particulate/core/checkpoint.h>
+#include <particulate/fbm/particulate_flow_output.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <array>
+
+namespace particulate {
+  namespace fbm {
+    template <int dim>
+    ParticulateFlowOutput<dim>::ParticulateFlowOutput(
+      const core::OutputParameters &parameters,
+      MPI_Comm                      comm)
+      : parameters(parameters)
+      , communicator(comm)
+      , flow_output(parameters.directory, "flow")
+      , body_output(parameters.directory + "/particles")
+    {}
+
+
+
+    template <int dim>
+    std::string
+    ParticulateFlowOutput<dim>::series_file(const std::string &name,
+                                            const bool         restart,
+                                            const double       time) const
+    {
+      const std::string file = parameters.directory + "/" + name + ".dat";
+      if (restart
+          && dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+        core::truncate_time_series(file, time);
+      return file;
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::open_time_series(const unsigned int n_bodies,
+                                                 const bool   adapted_mesh,
+                                                 const bool   restart,
+                                                 const double time)
+    {
+      for (unsigned int i = 0; i < n_bodies; ++i)
+        body_series.push_back(std::make_unique<core::TimeSeriesWriter>(
+          series_file("particle_" + std::to_string(i), restart, time),
+          std::vector<std::string>{
+            "time",        "x",    "y",       "z",       "u",
+            "v",           "w",    "omega_x", "omega_y", "omega_z",
+            "F_x",         "F_y",  "F_z",     "T_x",     "T_y",
+            "T_z",         "Fc_x", "Fc_y",    "Fc_z",    "kinetic_energy",
+            "nodes_inside"},
+          communicator,
+          restart));
+      if (adapted_mesh)
+        mesh_series = std::make_unique<core::TimeSeriesWriter>(
+          series_file("mesh", restart, time),
+          std::vector<std::string>{"time",
+                                   "min_scaled_jacobian",
+                                   "mean_scaled_jacobian",
+                                   "max_aspect_ratio",
+                                   "held_back_vertices",
+                                   "projected_vertices",
+                                   "adaptation_steps",
+                                   "readapted",
+                                   "max_vertex_move"},
+          communicator,
+          restart);
+      flow_series = std::make_unique<core::TimeSeriesWriter>(
+        series_file("flow", restart, time),
+        std::vector<std::string>{"time",
+                                 "fluid_kinetic_energy",
+                                 "particle_kinetic_energy",
+                                 "nonlinear_iterations",
+                                 "linear_iterations",
+                                 "time_step"},
+        communicator,
+        restart);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::record_mesh(
+      const double                          time,
+      const deformation::DeformationReport &r)
+    {
+      if (mesh_series)
+        mesh_series->write_row({time,
+                                r.quality.min_scaled_jacobian,
+                                r.quality.mean_scaled_jacobian,
+                                r.quality.max_aspect_ratio,
+                                double(r.held_back_vertices),
+                                double(r.projected_vertices),
+                                double(r.steps),
+                                double(r.readapted),
+                                r.max_vertex_move});
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::record_bodies(
+      const double                   time,
+      const std::vector<BodyRecord> &bodies)
+    {
+      AssertDimension(bodies.size(), body_series.size());
+      for (unsigned int i = 0; i < bodies.size(); ++i)
+        {
+          const BodyRecord                            &r = bodies[i];
+          std::vector<double>                          row{time};
+          const std::array<const Eigen::Vector3d *, 6> columns{
+            {&r.body->position,
+             &r.body->linear_velocity,
+             &r.body->angular_velocity,
+             &r.load.force,
+             &r.load.torque,
+             &r.contact_force}};
+          for (const Eigen::Vector3d *v : columns)
+            for (unsigned int d = 0; d < 3; ++d)
+              row.push_back((*v)[d]);
+          row.push_back(r.kinetic_energy);
+          row.push_back(double(r.nodes_inside));
+          body_series[i]->write_row(row);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::record_flow(
+      const double                  time,
+      const double                  fluid_kinetic_energy,
+      const double                  particle_kinetic_energy,
+      const fluid::SolveStatistics &statistics,
+      const double                  time_step)
+    {
+      flow_series->write_row({time,
+                              fluid_kinetic_energy,
+                              particle_kinetic_energy,
+                              double(statistics.nonlinear_iterations),
+                              double(statistics.linear_iterations),
+                              time_step});
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::write_fields(
+      const fluid::NavierStokes<dim> &flow,
+      const rigid::World             &world,
+      const unsigned int              step,
+      const double                    time)
+    {
+      if (!parameters.write_vtu)
+        return;
+      flow_output.write(flow, step, time);
+      if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+        body_output.write(world);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::save(std::ostream &out) const
+    {
+      core::write_binary_series(out, flow_output.written());
+      core::write_binary_series(out, body_output.written());
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::load(std::istream &in)
+    {
+      flow_output.resume(core::read_binary_series(in));
+      body_output.resume(core::read_binary_series(in));
+    }
+
+    template class ParticulateFlowOutput<2>;
+    template class ParticulateFlowOutput<3>;
+  } // namespace fbm
+} // namespace particulate

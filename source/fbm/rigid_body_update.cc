@@ -1,0 +1,159 @@
+#include <particulate/fbm/rigid_body_update.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace particulate {
+  namespace fbm {
+    RigidBodyUpdate::RigidBodyUpdate(const ParticleParameters &particles,
+                                     const double              fluid_density)
+      : particle_density(particles.density)
+      , fluid_density(fluid_density)
+      , gravity(particles.gravity)
+      , free(particles.motion == ParticleParameters::Motion::free)
+      , locked_translation(particles.locked_translation)
+      , locked_rotation(particles.locked_rotation)
+    {}
+
+
+
+    double
+    RigidBodyUpdate::true_mass(const rigid::RigidBody &body) const
+    {
+      return particle_density * body.volume();
+    }
+
+
+
+    Eigen::Matrix3d
+    RigidBodyUpdate::true_inertia_world(const rigid::RigidBody &body) const
+    {
+      // from the shape, not the engine's body: a fixed or prescribed
+      // particle is an immovable body of infinite inertia in the engine
+      const Eigen::Matrix3d R = body.rotation();
+      return R * (particle_density * body.shape().unit_inertia())
+             * R.transpose();
+    }
+
+
+
+    double
+    RigidBodyUpdate::kinetic_energy(const rigid::RigidBody &body) const
+    {
+      return 0.5 * true_mass(body) * body.linear_velocity.squaredNorm()
+             + 0.5
+                 * body.angular_velocity.dot(true_inertia_world(body)
+                                             * body.angular_velocity);
+    }
+
+
+
+    void
+    RigidBodyUpdate::apply_loads(rigid::World            &world,
+                                 const rigid::BodyId      id,
+                                 const BodyCouplingState &state) const
+    {
+      const rigid::RigidBody &b   = world.body(id);
+      const double            m_a = b.mass() - true_mass(b);
+      Eigen::Vector3d         force
+        = state.fluid_load.force
+          + (particle_density - fluid_density) * b.volume() * gravity
+          + m_a * state.acceleration;
+      const Eigen::Matrix3d I_a = b.inertia_world() - true_inertia_world(b);
+      Eigen::Vector3d       torque
+        = state.fluid_load.torque + I_a * state.angular_acceleration;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          if (locked_translation[d])
+            force[d] = 0.;
+          if (locked_rotation[d])
+            torque[d] = 0.;
+        }
+      world.set_external_force_and_torque(id, force, torque);
+    }
+
+
+
+    void
+    RigidBodyUpdate::restore_locked_axes(
+      rigid::RigidBody         &b,
+      const Eigen::Vector3d    &old_position,
+      const Eigen::Quaterniond &old_orientation) const
+    {
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          if (locked_translation[d])
+            {
+              b.linear_velocity[d] = 0.;
+              b.position[d]        = old_position[d];
+            }
+          if (locked_rotation[d])
+            b.angular_velocity[d] = 0.;
+        }
+      if (locked_rotation[0] && locked_rotation[1] && locked_rotation[2])
+        b.orientation = old_orientation;
+    }
+
+
+
+    void
+    RigidBodyUpdate::clip_against_contacts(const rigid::World &world,
+                                           const rigid::BodyId id,
+                                           Eigen::Vector3d    &acceleration)
+    {
+      for (const auto &f : world.contact_forces(id))
+        if (f.force.norm() > 0.)
+          {
+            const Eigen::Vector3d n = f.force.normalized();
+            const double          a = acceleration.dot(n);
+            if (a > 0.)
+              acceleration -= a * n;
+          }
+    }
+
+
+
+    void
+    RigidBodyUpdate::advance(rigid::World                     &world,
+                             const std::vector<rigid::BodyId> &ids,
+                             std::vector<BodyCouplingState>   &states,
+                             const double                      time_step,
+                             const double                      time) const
+    {
+      const unsigned int           n = ids.size();
+      std::vector<Eigen::Vector3d> old_velocity(n), old_angular(n),
+        old_position(n);
+      std::vector<Eigen::Quaterniond> old_orientation(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const rigid::RigidBody &b = world.body(ids[i]);
+          old_velocity[i]           = b.linear_velocity;
+          old_angular[i]            = b.angular_velocity;
+          old_position[i]           = b.position;
+          old_orientation[i]        = b.orientation;
+          if (free)
+            apply_loads(world, ids[i], states[i]);
+        }
+      world.step(time_step);
+      if (!free)
+        return;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          rigid::RigidBody &b = world.body(ids[i]);
+          restore_locked_axes(b, old_position[i], old_orientation[i]);
+          if (!b.linear_velocity.allFinite() || !b.position.allFinite())
+            throw std::runtime_error(
+              "Particle " + std::to_string(i)
+              + " has a non-finite velocity at t = " + std::to_string(time)
+              + " s: the coupling diverged. Reduce 'Time step' in "
+                "subsection 'Time' or raise 'Added mass coefficient' in "
+                "subsection 'Particles'.");
+          states[i].acceleration
+            = (b.linear_velocity - old_velocity[i]) / time_step;
+          states[i].angular_acceleration
+            = (b.angular_velocity - old_angular[i]) / time_step;
+          clip_against_contacts(world, ids[i], states[i].acceleration);
+        }
+    }
+  } // namespace fbm
+} // namespace particulate
