@@ -20,16 +20,21 @@ namespace particulate {
 
 
     template <int dim>
-    std::string
-    ParticulateFlowOutput<dim>::series_file(const std::string &name,
-                                            const bool         restart,
-                                            const double       time) const
+    std::unique_ptr<core::TimeSeriesWriter>
+    ParticulateFlowOutput<dim>::open_series(
+      const std::string              &name,
+      const std::vector<std::string> &columns,
+      const bool                      restart,
+      const double                    time) const
     {
       const std::string file = parameters.directory + "/" + name + ".dat";
       if (restart
           && dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
         core::truncate_time_series(file, time);
-      return file;
+      return std::make_unique<core::TimeSeriesWriter>(file,
+                                                      columns,
+                                                      communicator,
+                                                      restart);
     }
 
 
@@ -42,20 +47,19 @@ namespace particulate {
                                                  const double time)
     {
       for (unsigned int i = 0; i < n_bodies; ++i)
-        body_series.push_back(std::make_unique<core::TimeSeriesWriter>(
-          series_file("particle_" + std::to_string(i), restart, time),
-          std::vector<std::string>{
-            "time",        "x",    "y",       "z",       "u",
-            "v",           "w",    "omega_x", "omega_y", "omega_z",
-            "F_x",         "F_y",  "F_z",     "T_x",     "T_y",
-            "T_z",         "Fc_x", "Fc_y",    "Fc_z",    "kinetic_energy",
-            "nodes_inside"},
-          communicator,
-          restart));
+        body_series.push_back(
+          open_series("particle_" + std::to_string(i),
+                      {"time",        "x",       "y",    "z",
+                       "u",           "v",       "w",    "omega_x",
+                       "omega_y",     "omega_z", "F_x",  "F_y",
+                       "F_z",         "T_x",     "T_y",  "T_z",
+                       "Fc_x",        "Fc_y",    "Fc_z", "kinetic_energy",
+                       "nodes_inside"},
+                      restart,
+                      time));
       if (adapted_mesh)
-        mesh_series = std::make_unique<core::TimeSeriesWriter>(
-          series_file("mesh", restart, time),
-          std::vector<std::string>{"time",
+        mesh_series = open_series("mesh",
+                                  {"time",
                                    "min_scaled_jacobian",
                                    "mean_scaled_jacobian",
                                    "max_aspect_ratio",
@@ -64,18 +68,17 @@ namespace particulate {
                                    "adaptation_steps",
                                    "readapted",
                                    "max_vertex_move"},
-          communicator,
-          restart);
-      flow_series = std::make_unique<core::TimeSeriesWriter>(
-        series_file("flow", restart, time),
-        std::vector<std::string>{"time",
+                                  restart,
+                                  time);
+      flow_series = open_series("flow",
+                                {"time",
                                  "fluid_kinetic_energy",
                                  "particle_kinetic_energy",
                                  "nonlinear_iterations",
                                  "linear_iterations",
                                  "time_step"},
-        communicator,
-        restart);
+                                restart,
+                                time);
     }
 
 

@@ -100,11 +100,13 @@ namespace particulate {
       }
 
     private:
-      /** The path of the series @p name, cut at @p time on a restart. */
-      std::string
-      series_file(const std::string &name,
-                  const bool         restart,
-                  const double       time) const;
+      /** The series `<name>.dat` with @p columns; on a restart the
+       *  existing file, cut at @p time and continued. */
+      std::unique_ptr<core::TimeSeriesWriter>
+      open_series(const std::string              &name,
+                  const std::vector<std::string> &columns,
+                  const bool                      restart,
+                  const double                    time) const;
 
       const core::OutputParameters                         parameters;
       MPI_Comm                                             communicator;
