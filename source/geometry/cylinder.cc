@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "shape_formulas.h"
+
 namespace particulate::geometry {
 
   Cylinder::Cylinder(const double radius, const double half_height)
@@ -82,16 +84,7 @@ namespace particulate::geometry {
   std::vector<Eigen::Vector3d>
   Cylinder::surface_points() const
   {
-    std::vector<Eigen::Vector3d> points;
-    for (int k = 0; k < 16; ++k)
-      {
-        const double a = 2. * M_PI * k / 16.;
-        for (const double z : {-hh, 0., hh})
-          points.emplace_back(r * std::cos(a), r * std::sin(a), z);
-      }
-    points.emplace_back(0., 0., hh);
-    points.emplace_back(0., 0., -hh);
-    return points;
+    return detail::elliptic_prism_surface_points(r, r, hh);
   }
 
 } // namespace particulate::geometry

@@ -5,42 +5,22 @@
 #include <array>
 #include <cmath>
 
+#include "ellipse_distance.h"
 #include "shape_formulas.h"
 
 namespace particulate::geometry {
 
   namespace {
-    // Closest point on the ellipse/ellipsoid by the method of D. Eberly: with
+    using detail::closest_on_ellipse;
+
+    // Closest point on the ellipsoid by the method of D. Eberly: with
     // the query y in the first octant and semi-axes sorted e0 >= e1 (>= e2),
     // the closest point is x_i = r_i y_i / (s + r_i) with r_i = (e_i / e_min)^2
     // and s the unique root of G(s) = sum (r_i z_i / (s + r_i))^2 - 1, z_i =
     // y_i/e_i, on [z_min - 1, |r z| - 1]. G is strictly decreasing there, so
     // bisection until the interval stops shrinking gives the root to machine
     // precision. Points on coordinate planes are reduced to the
-    // lower-dimensional problem.
-
-    double
-    root_2d(const double r0, const double z0, const double z1, const double g)
-    {
-      const double n0 = r0 * z0;
-      double       s0 = z1 - 1., s1 = g < 0. ? 0. : std::hypot(n0, z1) - 1.;
-      double       s = 0.;
-      for (int i = 0; i < 2000; ++i)
-        {
-          s = 0.5 * (s0 + s1);
-          if (s == s0 || s == s1)
-            break;
-          const double a = n0 / (s + r0), b = z1 / (s + 1.);
-          const double v = a * a + b * b - 1.;
-          if (v > 0.)
-            s0 = s;
-          else if (v < 0.)
-            s1 = s;
-          else
-            break;
-        }
-      return s;
-    }
+    // lower-dimensional problem, the ellipse (ellipse_distance.h).
 
     double
     root_3d(const double r0,
@@ -69,57 +49,6 @@ namespace particulate::geometry {
             break;
         }
       return s;
-    }
-
-    // e0 >= e1 > 0, y0, y1 >= 0: closest point (x0, x1) on the ellipse.
-    void
-    closest_on_ellipse(const double e0,
-                       const double e1,
-                       const double y0,
-                       const double y1,
-                       double      &x0,
-                       double      &x1)
-    {
-      if (y1 > 0.)
-        {
-          if (y0 > 0.)
-            {
-              const double z0 = y0 / e0, z1 = y1 / e1;
-              const double g = z0 * z0 + z1 * z1 - 1.;
-              if (g != 0.)
-                {
-                  const double r0 = (e0 / e1) * (e0 / e1);
-                  const double s  = root_2d(r0, z0, z1, g);
-                  x0              = r0 * y0 / (s + r0);
-                  x1              = y1 / (s + 1.);
-                }
-              else
-                {
-                  x0 = y0;
-                  x1 = y1;
-                }
-            }
-          else
-            {
-              x0 = 0.;
-              x1 = e1;
-            }
-        }
-      else
-        {
-          const double numer0 = e0 * y0, denom0 = e0 * e0 - e1 * e1;
-          if (numer0 < denom0)
-            {
-              const double xde0 = numer0 / denom0;
-              x0                = e0 * xde0;
-              x1 = e1 * std::sqrt(std::max(0., 1. - xde0 * xde0));
-            }
-          else
-            {
-              x0 = e0;
-              x1 = 0.;
-            }
-        }
     }
 
     // e0 >= e1 >= e2 > 0, y >= 0 componentwise: closest point x on the

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <vector>
 
 namespace particulate::geometry::detail {
@@ -35,6 +36,25 @@ namespace particulate::geometry::detail {
     const Eigen::Vector3d s = half_axes.cwiseAbs2();
     return (volume / n * Eigen::Vector3d(s[1] + s[2], s[0] + s[2], s[0] + s[1]))
       .asDiagonal();
+  }
+
+  /** Surface points of a cylinder along z with an elliptic section of
+   *  semi-axes @p a, @p b and half height @p hh: 16 points around each rim
+   *  and the middle section, and the two cap centres (a circular cylinder
+   *  has a = b). */
+  inline std::vector<Eigen::Vector3d>
+  elliptic_prism_surface_points(const double a, const double b, const double hh)
+  {
+    std::vector<Eigen::Vector3d> points;
+    for (int k = 0; k < 16; ++k)
+      {
+        const double t = 2. * M_PI * k / 16.;
+        for (const double z : {-hh, 0., hh})
+          points.emplace_back(a * std::cos(t), b * std::sin(t), z);
+      }
+    points.emplace_back(0., 0., hh);
+    points.emplace_back(0., 0., -hh);
+    return points;
   }
 
 } // namespace particulate::geometry::detail

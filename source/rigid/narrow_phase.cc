@@ -345,35 +345,39 @@ namespace particulate::rigid {
       box_plane(A, B, margin, out);
     else if (ta == T::capsule && tb == T::half_space)
       capsule_plane(A, B, margin, out);
-    else if (ta == T::general || tb == T::general)
+    else if (ta == T::sphere && tb == T::general)
       {
-        if (ta == T::sphere)
+        // Exact for a sphere: its centre against the distance field. Kept
+        // for convex general shapes too, rather than GJK/EPA: the distance
+        // of the centre minus r is the exact gap and depth whenever the
+        // shape's signed distance is exact, and its normal is the exact
+        // gradient, where EPA's would carry the polytope tolerance.
+        const double          r  = sphere_radius(A);
+        const Eigen::Vector3d pq = B.to_body(A.position);
+        Eigen::Vector3d       gb;
+        const double          gap = B.shape().signed_distance(pq, &gb) - r;
+        if (gap <= margin)
           {
-            // Exact for a sphere: its centre against the distance field.
-            const double          r  = sphere_radius(A);
-            const Eigen::Vector3d pq = B.to_body(A.position);
-            Eigen::Vector3d       gb;
-            const double          gap = B.shape().signed_distance(pq, &gb) - r;
-            if (gap <= margin)
-              {
-                const Eigen::Vector3d g = B.rotation() * gb;
-                out.push_back(make_point(A,
-                                         A.position - r * g,
-                                         A.position - (r + gap) * g,
-                                         -g,
-                                         gap));
-              }
-          }
-        else
-          {
-            // Surface points of each body against the other's distance
-            // function (a half-space has no surface points of its own).
-            sample_against(A, A, B, false, margin, out);
-            if (tb != T::half_space)
-              sample_against(A, B, A, true, margin, out);
-            detail::reduce_points(out, 8);
+            const Eigen::Vector3d g = B.rotation() * gb;
+            out.push_back(make_point(A,
+                                     A.position - r * g,
+                                     A.position - (r + gap) * g,
+                                     -g,
+                                     gap));
           }
       }
+    else if ((ta == T::general && !A.shape().is_convex())
+             || (tb == T::general && !B.shape().is_convex()))
+      {
+        // Surface points of each body against the other's distance
+        // function (a half-space has no surface points of its own).
+        sample_against(A, A, B, false, margin, out);
+        if (tb != T::half_space)
+          sample_against(A, B, A, true, margin, out);
+        detail::reduce_points(out, 8);
+      }
+    // Every other pair is convex, general shapes with a support function
+    // (e.g. the elliptic cylinder) included.
     else if (tb == T::half_space)
       convex_plane(A, B, margin, out);
     else

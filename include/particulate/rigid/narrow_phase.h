@@ -14,13 +14,16 @@ namespace particulate::rigid {
    * - box–box: separating axes plus Sutherland–Hodgman clipping of the
    *   incident face against the reference face (up to 4 points), edge–edge
    *   contacts by closest points of the edges;
-   * - other convex pairs: GJK distance warm-started from the cached normal,
+   * - other convex pairs, general shapes that are convex (the elliptic
+   *   cylinder) included: GJK distance warm-started from the cached normal,
    *   EPA for penetrations; convex–plane by support points in a fan of
    *   directions around the plane normal, so cylinders rest on several
    *   points (§3.4.1);
-   * - signed-distance (mesh) shapes: the surface points of each body are
+   * - a sphere against any general shape: its centre against the shape's
+   *   signed distance (exact);
+   * - non-convex general (mesh) shapes: the surface points of each body are
    *   tested against the other body's distance function (§3.4.2, the
-   *   distance-map approach), the sphere centre exactly for spheres.
+   *   distance-map approach).
    *
    * Contacts are reported for gaps up to the given margin: speculative
    * contacts for pairs still apart that could close within the step
