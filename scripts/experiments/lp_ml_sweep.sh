@@ -39,7 +39,9 @@ for v in "${variants[@]}"; do
 end
 subsection Particles
  set Covered nodes = nearest
- set Velocities = 0, 0, -0.12
+ subsection Particle 0
+  set Velocity = 0, 0, -0.12
+ end
 end" "$level" > run.log 2>&1
   echo "## ${v:-code default (ILU(0), 1 sweep)}"
   grep -E "^\| $level \||Schur complement solves|Schur approximation: AMG|velocity preconditioner \|" run.log

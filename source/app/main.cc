@@ -3,6 +3,7 @@
 
 #include <particulate/core/input_file.h>
 #include <particulate/core/mesh.h>
+#include <particulate/fbm/particle_set_checks.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
 #include <particulate/fluid/flow_simulation.h>
 
@@ -51,11 +52,16 @@ namespace {
   fbm::ParticulateFlowParameters
   read_case(dealii::ParameterHandler &prm, const std::string &filename)
   {
-    core::parse_input_file(prm, filename);
+    // the particle lists the file holds are declared before it is parsed
+    const core::InputOutline outline(filename);
+    fbm::ParticulateFlowParameters::declare(prm,
+                                            fbm::ParticleSetLayout::of(
+                                              outline));
+    core::parse_input_file(prm, outline);
     fbm::ParticulateFlowParameters all;
     try
       {
-        all.parse(prm, filename);
+        all.parse(prm, outline);
       }
     catch (const std::runtime_error &e)
       {
@@ -71,10 +77,11 @@ namespace {
 
   template <int dim>
   void
-  check_case(const fluid::FlowCaseParameters &parameters,
-             const std::string               &filename,
-             MPI_Comm                         comm)
+  check_case(const fbm::ParticulateFlowParameters &all,
+             const std::string                    &filename,
+             MPI_Comm                              comm)
   {
+    const fluid::FlowCaseParameters &parameters = all.flow;
     // expressions with the right number of components
     parameters.fluid.properties.body_force.create<dim>(dim,
                                                        "Fluid / Body force");
@@ -89,6 +96,19 @@ namespace {
     core::create_mesh(coarse, tria);
     parameters.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
                                                filename);
+    // the particles inside the domain
+    const auto [lower, upper] = core::global_bounding_box(tria, comm);
+    Eigen::Vector3d low = Eigen::Vector3d::Zero(), up = Eigen::Vector3d::Zero();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        low[d] = lower[d];
+        up[d]  = upper[d];
+      }
+    fbm::check_inside_box(all.particles.bodies,
+                          low,
+                          up,
+                          all.particles.symmetry_planes,
+                          dim);
   }
 
   template <int dim>
@@ -129,27 +149,31 @@ main(int argc, char **argv)
   bool reading_input = true;
   try
     {
-      dealii::ParameterHandler prm;
-      fbm::ParticulateFlowParameters::declare(prm);
-
       if (args.empty() || args[0] == "--help" || args[0] == "-h")
         {
           if (root)
             print_usage(std::cout);
           return args.empty() ? 1 : 0;
         }
-      if (args[0] == "--print-parameters"
-          || args[0] == "--print-parameters=prm")
+      if (args[0].rfind("--print-parameters", 0) == 0)
         {
-          if (root)
-            core::write_parameter_listing(prm, std::cout);
-          return 0;
-        }
-      if (args[0] == "--print-parameters=markdown")
-        {
-          if (root)
-            core::write_parameter_reference(prm, std::cout);
-          return 0;
+          dealii::ParameterHandler prm;
+          fbm::ParticulateFlowParameters::declare(
+            prm,
+            fbm::ParticleSetLayout::documentation());
+          if (args[0] == "--print-parameters=markdown")
+            {
+              if (root)
+                core::write_parameter_reference(prm, std::cout);
+              return 0;
+            }
+          if (args[0] == "--print-parameters"
+              || args[0] == "--print-parameters=prm")
+            {
+              if (root)
+                core::write_parameter_listing(prm, std::cout);
+              return 0;
+            }
         }
 
       const bool        validate_only = args[0] == "--validate";
@@ -168,6 +192,7 @@ main(int argc, char **argv)
           return 1;
         }
 
+      dealii::ParameterHandler       prm;
       fbm::ParticulateFlowParameters all = read_case(prm, filename);
       all.restart                        = restart;
       if (restart
@@ -179,9 +204,9 @@ main(int argc, char **argv)
       const fluid::FlowCaseParameters &parameters = all.flow;
       const unsigned int               dim = parameters.simulation.dimension;
       if (dim == 2)
-        check_case<2>(parameters, filename, comm);
+        check_case<2>(all, filename, comm);
       else
-        check_case<3>(parameters, filename, comm);
+        check_case<3>(all, filename, comm);
       reading_input = false;
       if (validate_only)
         {

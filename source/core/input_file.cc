@@ -1,4 +1,5 @@
 #include <particulate/core/input_file.h>
+#include <particulate/core/input_outline.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -7,7 +8,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -33,37 +33,6 @@ namespace particulate {
       is_entry(const Tree &node)
       {
         return node.find("pattern_description") != node.not_found();
-      }
-
-      std::string
-      trim(const std::string &s)
-      {
-        const auto first = s.find_first_not_of(" \t\r");
-        if (first == std::string::npos)
-          return "";
-        const auto last = s.find_last_not_of(" \t\r");
-        return s.substr(first, last - first + 1);
-      }
-
-      /// Collapse runs of blanks to one, as deal.II does for names.
-      std::string
-      normalise_name(const std::string &s)
-      {
-        std::string out;
-        bool        blank = false;
-        for (const char c : trim(s))
-          {
-            if (c == ' ' || c == '\t')
-              blank = true;
-            else
-              {
-                if (blank && !out.empty())
-                  out += ' ';
-                out += c;
-                blank = false;
-              }
-          }
-        return out;
       }
 
       std::string
@@ -123,108 +92,50 @@ namespace particulate {
                                  + message);
       }
 
-      /**
-       * Walk the file line by line (comments, continuation lines and
-       * `include` are handled as deal.II does) and check every name
-       * against the declared tree.
-       */
+      /** Check every name of @p outline against the declared tree. */
       void
-      check_names(const Tree &declared, const std::string &filename)
+      check_names(const Tree &declared, const InputOutline &outline)
       {
-        std::ifstream in(filename);
-        if (!in)
-          throw std::runtime_error("Cannot open the parameter file '" + filename
-                                   + "'. Check the path (relative paths are "
-                                     "taken from the current directory).");
-
+        const std::string        &filename = outline.filename();
         std::vector<const Tree *> node_stack{&declared};
-        std::vector<std::string>  path;
-        std::vector<unsigned int> opened_at;
-        std::string               raw, line;
-        unsigned int              line_number = 0, start_line = 0;
-        while (std::getline(in, raw))
+        for (const InputOutline::Statement &s : outline.statements())
           {
-            ++line_number;
-            if (line.empty())
-              start_line = line_number;
-            // strip comments, join continuation lines
-            const auto hash = raw.find('#');
-            if (hash != std::string::npos)
-              raw.erase(hash);
-            raw = trim(raw);
-            if (!raw.empty() && raw.back() == '\\')
+            const std::vector<std::string> &path = s.path;
+            switch (s.keyword)
               {
-                line += raw.substr(0, raw.size() - 1);
-                continue;
+                case InputOutline::Keyword::subsection:
+                  {
+                    const Tree &node  = *node_stack.back();
+                    const auto  child = node.find(s.name);
+                    if (child == node.not_found() || is_entry(child->second))
+                      fail(filename,
+                           s.line,
+                           "unknown subsection '" + s.name + "' in "
+                             + path_string(path) + "."
+                             + suggestion(s.name, child_names(node, false)));
+                    node_stack.push_back(&child->second);
+                    break;
+                  }
+                case InputOutline::Keyword::end:
+                  node_stack.pop_back();
+                  break;
+                case InputOutline::Keyword::set:
+                  {
+                    const Tree &node  = *node_stack.back();
+                    const auto  entry = node.find(s.name);
+                    if (entry == node.not_found() || !is_entry(entry->second))
+                      fail(filename,
+                           s.line,
+                           "unknown entry '" + s.name + "' in "
+                             + path_string(path) + "."
+                             + suggestion(s.name, child_names(node, true)));
+                    break;
+                  }
+                case InputOutline::Keyword::include:
+                  break; // deal.II resolves it; the included file is
+                         // checked there
               }
-            line += raw;
-            const std::string statement = trim(line);
-            line.clear();
-            if (statement.empty())
-              continue;
-
-            std::istringstream words(statement);
-            std::string        keyword;
-            words >> keyword;
-            std::string rest;
-            std::getline(words, rest);
-            rest = normalise_name(rest);
-
-            if (keyword == "subsection")
-              {
-                const Tree &node  = *node_stack.back();
-                const auto  child = node.find(rest);
-                if (child == node.not_found() || is_entry(child->second))
-                  fail(filename,
-                       start_line,
-                       "unknown subsection '" + rest + "' in "
-                         + path_string(path) + "."
-                         + suggestion(rest, child_names(node, false)));
-                node_stack.push_back(&child->second);
-                path.push_back(rest);
-                opened_at.push_back(start_line);
-              }
-            else if (keyword == "end")
-              {
-                if (path.empty())
-                  fail(filename,
-                       start_line,
-                       "'end' without a matching 'subsection'. Remove it or "
-                       "add the missing 'subsection' line.");
-                node_stack.pop_back();
-                path.pop_back();
-                opened_at.pop_back();
-              }
-            else if (keyword == "set")
-              {
-                const auto equal = rest.find('=');
-                if (equal == std::string::npos)
-                  fail(filename,
-                       start_line,
-                       "a 'set' line needs the form 'set Name = value'.");
-                const std::string name  = normalise_name(rest.substr(0, equal));
-                const Tree       &node  = *node_stack.back();
-                const auto        entry = node.find(name);
-                if (entry == node.not_found() || !is_entry(entry->second))
-                  fail(filename,
-                       start_line,
-                       "unknown entry '" + name + "' in " + path_string(path)
-                         + "." + suggestion(name, child_names(node, true)));
-              }
-            else if (keyword == "include" || keyword == "INCLUDE")
-              continue; // deal.II resolves it; the included file is checked
-                        // there
-            else
-              fail(
-                filename,
-                start_line,
-                "cannot read '" + statement
-                  + "'. Lines start with 'subsection', 'set', 'end' or '#'.");
           }
-        if (!path.empty())
-          fail(filename,
-               opened_at.back(),
-               path_string(path) + " is never closed: add an 'end' line.");
       }
     } // namespace
 
@@ -275,7 +186,16 @@ namespace particulate {
     void
     parse_input_file(dealii::ParameterHandler &prm, const std::string &filename)
     {
-      check_names(declared_tree(prm), filename);
+      parse_input_file(prm, InputOutline(filename));
+    }
+
+
+
+    void
+    parse_input_file(dealii::ParameterHandler &prm, const InputOutline &outline)
+    {
+      const std::string &filename = outline.filename();
+      check_names(declared_tree(prm), outline);
       try
         {
           prm.parse_input(filename, "", /*skip_undefined=*/false);

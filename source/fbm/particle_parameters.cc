@@ -1,60 +1,22 @@
 #include <particulate/cuda/containment_engine.h>
 #include <particulate/fbm/particle_parameters.h>
+#include <particulate/fbm/particle_shape.h>
 
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "entry_values.h"
 
 namespace particulate {
   namespace fbm {
     using namespace dealii;
 
     namespace {
-      [[noreturn]] void
-      fail(const std::string &entry, const std::string &what)
-      {
-        throw std::runtime_error("subsection 'Particles', entry '" + entry
-                                 + "': " + what);
-      }
-
-      /** "x, y[, z]; x, y[, z]; ..." with @p dim coordinates each. */
-      std::vector<Eigen::Vector3d>
-      parse_points(const std::string &text,
-                   const unsigned int dim,
-                   const std::string &entry)
-      {
-        std::vector<Eigen::Vector3d> points;
-        if (Utilities::trim(text).empty())
-          return points;
-        for (const std::string &item : Utilities::split_string_list(text, ';'))
-          {
-            const auto coordinates = Utilities::split_string_list(item, ',');
-            if (coordinates.size() != dim)
-              fail(entry,
-                   "'" + item + "' has " + std::to_string(coordinates.size())
-                     + " coordinates; a " + std::to_string(dim) + "D run needs "
-                     + std::to_string(dim)
-                     + " per point, points separated by ';'.");
-            Eigen::Vector3d p = Eigen::Vector3d::Zero();
-            for (unsigned int d = 0; d < dim; ++d)
-              try
-                {
-                  p[d] = Utilities::string_to_double(coordinates[d]);
-                }
-              catch (...)
-                {
-                  fail(entry, "'" + coordinates[d] + "' is not a number.");
-                }
-            points.push_back(p);
-          }
-        return points;
-      }
-
       std::array<bool, 3>
-      parse_axes(const std::string &text, const std::string &entry)
+      parse_axes(const std::string &text, const std::string &where)
       {
         std::array<bool, 3> axes = {{false, false, false}};
         for (const std::string &a : Utilities::split_string_list(text, ','))
@@ -66,8 +28,10 @@ namespace particulate {
             else if (a == "z")
               axes[2] = true;
             else
-              fail(entry,
-                   "'" + a + "' is not an axis; write a list of x, y, z.");
+              internal::fail_at(where,
+                                "'" + a
+                                  + "' is not an axis; write a list of x, y, "
+                                    "z.");
           }
         return axes;
       }
@@ -76,66 +40,11 @@ namespace particulate {
 
 
     void
-    ParticleParameters::declare(ParameterHandler &prm)
+    ParticleParameters::declare(ParameterHandler        &prm,
+                                const ParticleSetLayout &layout)
     {
       prm.enter_subsection("Particles");
-      prm.declare_entry("Shape",
-                        "sphere",
-                        Patterns::Selection("sphere|disk|cylinder"),
-                        "Shape of every particle: 'sphere' (3D runs), "
-                        "'disk' (2D runs; a cylinder of unit depth) or "
-                        "'cylinder' (3D runs: a circular cylinder of radius "
-                        "'Radius' whose axis runs along z through the "
-                        "particle's position, of length 'Length'; e.g. a "
-                        "cylinder spanning a slab-shaped channel).");
-      prm.declare_entry("Radius",
-                        "0.0075",
-                        Patterns::Double(0.),
-                        "Particle radius [m].");
-      prm.declare_entry("Length",
-                        "0",
-                        Patterns::Double(0.),
-                        "Shape = cylinder: length of the cylinder along z "
-                        "[m], centred at the particle's position. A cylinder "
-                        "that spans a channel from wall to wall has the "
-                        "channel's depth; leave the z faces out of 'Domain "
-                        "walls' then, or the engine sees it touching them.");
-      prm.declare_entry("Density",
-                        "1120",
-                        Patterns::Double(0.),
-                        "Particle density rho_p [kg/m^3]. The buoyancy uses "
-                        "the fluid 'Density' of subsection 'Fluid'.");
-      prm.declare_entry("Motion",
-                        "free",
-                        Patterns::Selection("free|fixed|prescribed"),
-                        "'free': the particles move under the fluid force, "
-                        "buoyancy-corrected gravity and contacts (thesis eq. "
-                        "5.3). 'fixed': they stay at rest, obstacles described "
-                        "by the fictitious boundary method. 'prescribed': "
-                        "they translate by 'Prescribed displacement' (e.g. an "
-                        "oscillating cylinder, thesis §6.3), whatever the "
-                        "fluid does.");
-      core::FunctionExpression::declare(
-        prm,
-        "Prescribed displacement",
-        "0; 0; 0",
-        "'Motion = prescribed': the displacement d(t) [m] of every particle "
-        "from its initial position, one expression in t per space dimension "
-        "(x, y and z are not used), e.g. 'A*sin(2*pi*f*t); 0' with 'A=0.25, "
-        "f=0.25' in the constants entry. The velocity is its time "
-        "derivative, taken numerically.");
-      prm.declare_entry("Positions",
-                        "",
-                        Patterns::Anything(),
-                        "Initial centres [m], one point per particle, "
-                        "coordinates separated by ',' and points by ';', "
-                        "e.g. '0.05, 0.05, 0.1275' or '1, 7.2; 1, 6.8'. "
-                        "The number of points is the number of particles.");
-      prm.declare_entry("Velocities",
-                        "",
-                        Patterns::Anything(),
-                        "Initial velocities [m/s], written like 'Positions' "
-                        "(empty: at rest).");
+      declare_particle_set(prm, layout);
       prm.declare_entry("Gravity",
                         "0, 0, -9.81",
                         Patterns::List(Patterns::Double(), 2, 3),
@@ -286,23 +195,15 @@ namespace particulate {
 
 
     void
-    ParticleParameters::parse(ParameterHandler &prm, const unsigned int dim)
+    ParticleParameters::parse(ParameterHandler         &prm,
+                              const unsigned int        dim,
+                              const core::InputOutline &outline)
     {
+      const auto fail = [&](const std::string &entry, const std::string &what) {
+        internal::fail_at(outline.where({"Particles"}, entry), what);
+      };
       prm.enter_subsection("Particles");
-      const std::string shape_name = prm.get("Shape");
-      shape                        = shape_name == "disk"     ? Shape::disk :
-                                     shape_name == "cylinder" ? Shape::cylinder :
-                                                                Shape::sphere;
-      radius                       = prm.get_double("Radius");
-      length                       = prm.get_double("Length");
-      density                      = prm.get_double("Density");
-      const std::string m          = prm.get("Motion");
-      motion                       = m == "fixed"      ? Motion::fixed :
-                                     m == "prescribed" ? Motion::prescribed :
-                                                         Motion::free;
-      prescribed_displacement.parse(prm, "Prescribed displacement");
-      positions    = parse_points(prm.get("Positions"), dim, "Positions");
-      velocities   = parse_points(prm.get("Velocities"), dim, "Velocities");
+      bodies       = read_particle_set(prm, dim, outline);
       const auto g = Utilities::split_string_list(prm.get("Gravity"), ',');
       gravity.setZero();
       if (g.size() < dim)
@@ -312,9 +213,11 @@ namespace particulate {
       for (unsigned int d = 0; d < dim; ++d)
         gravity[d] = Utilities::string_to_double(g[d]);
       locked_translation
-        = parse_axes(prm.get("Locked translations"), "Locked translations");
+        = parse_axes(prm.get("Locked translations"),
+                     outline.where({"Particles"}, "Locked translations"));
       locked_rotation
-        = parse_axes(prm.get("Locked rotations"), "Locked rotations");
+        = parse_axes(prm.get("Locked rotations"),
+                     outline.where({"Particles"}, "Locked rotations"));
       added_mass_coefficient = prm.get_double("Added mass coefficient");
       extrapolate_constraint_velocity
         = prm.get("Constraint velocity") == "extrapolated";
@@ -393,7 +296,7 @@ namespace particulate {
           locked_rotation[0] = locked_rotation[1] = true;
         }
       // a pure fluid run has no particles: nothing below concerns it
-      if (positions.empty())
+      if (bodies.empty())
         return;
       for (unsigned int f = 0; f < 6; ++f)
         if (symmetry_planes[f] && !locked_translation[f / 2])
@@ -406,47 +309,26 @@ namespace particulate {
                std::string("face ") + "xyz"[f / 2] + (f % 2 ? "+" : "-")
                  + " is also listed in 'Domain walls'; a mirror plane is not "
                    "a wall.");
-      if (dim == 2 && shape != Shape::disk)
-        fail("Shape", "a 2D run needs 'disk'.");
-      if (dim == 3 && shape == Shape::disk)
-        fail("Shape", "a 3D run needs 'sphere' or 'cylinder'.");
-      if (shape == Shape::cylinder && !(length > 0.))
-        fail("Length",
-             "a 'cylinder' needs its length along z [m] (the channel's depth "
-             "for a cylinder that spans it).");
-      if (shape == Shape::cylinder && containment_backend == "cuda")
-        fail("Containment backend",
-             "the cuda containment engine takes spheres and 2D disks only; "
-             "set 'cpu' or 'auto' for a 'cylinder'.");
-      if (!(radius > 0.))
-        fail("Radius", "must be positive.");
-      if (!(density > 0.))
-        fail("Density", "must be positive.");
-      if (motion == Motion::prescribed)
-        {
-          // the component count of the expression is checked here, so a
-          // forgotten ';' is reported before the run starts
-          try
-            {
-              if (dim == 2)
-                prescribed_displacement.create<2>(2,
-                                                  "Particles / Prescribed "
-                                                  "displacement");
-              else
-                prescribed_displacement.create<3>(3,
-                                                  "Particles / Prescribed "
-                                                  "displacement");
-            }
-          catch (const std::exception &e)
-            {
-              fail("Prescribed displacement", e.what());
-            }
-        }
-      if (!velocities.empty() && velocities.size() != positions.size())
-        fail("Velocities",
-             "gives " + std::to_string(velocities.size()) + " velocities for "
-               + std::to_string(positions.size())
-               + " particles; give one per particle or none.");
+      if (containment_backend == "cuda")
+        for (const ParticleDescription &p : bodies)
+          if (!is_rotation_invariant(*p.shape, dim))
+            fail("Containment backend",
+                 "the cuda containment engine takes spheres and 2D disks "
+                 "only, and "
+                   + p.origin + " is a " + p.shape->name()
+                   + "; set 'cpu' or 'auto'.");
+    }
+
+
+
+    bool
+    ParticleParameters::any(const ParticleMotion motion) const
+    {
+      return std::any_of(bodies.begin(),
+                         bodies.end(),
+                         [&](const ParticleDescription &p) {
+                           return p.motion == motion;
+                         });
     }
   } // namespace fbm
 } // namespace particulate

@@ -47,16 +47,34 @@ namespace particulate {
                                                  const double time)
     {
       for (unsigned int i = 0; i < n_bodies; ++i)
-        body_series.push_back(
-          open_series("particle_" + std::to_string(i),
-                      {"time",        "x",       "y",    "z",
-                       "u",           "v",       "w",    "omega_x",
-                       "omega_y",     "omega_z", "F_x",  "F_y",
-                       "F_z",         "T_x",     "T_y",  "T_z",
-                       "Fc_x",        "Fc_y",    "Fc_z", "kinetic_energy",
-                       "nodes_inside"},
-                      restart,
-                      time));
+        body_series.push_back(open_series("particle_" + std::to_string(i),
+                                          {"time",
+                                           "x",
+                                           "y",
+                                           "z",
+                                           "u",
+                                           "v",
+                                           "w",
+                                           "omega_x",
+                                           "omega_y",
+                                           "omega_z",
+                                           "F_x",
+                                           "F_y",
+                                           "F_z",
+                                           "T_x",
+                                           "T_y",
+                                           "T_z",
+                                           "Fc_x",
+                                           "Fc_y",
+                                           "Fc_z",
+                                           "kinetic_energy",
+                                           "nodes_inside",
+                                           "q_w",
+                                           "q_x",
+                                           "q_y",
+                                           "q_z"},
+                                          restart,
+                                          time));
       if (adapted_mesh)
         mesh_series = open_series("mesh",
                                   {"time",
@@ -126,6 +144,9 @@ namespace particulate {
               row.push_back((*v)[d]);
           row.push_back(r.kinetic_energy);
           row.push_back(double(r.nodes_inside));
+          const Eigen::Quaterniond &q = r.body->orientation;
+          for (const double c : {q.w(), q.x(), q.y(), q.z()})
+            row.push_back(c);
           body_series[i]->write_row(row);
         }
     }

@@ -10,10 +10,11 @@
 namespace particulate {
   namespace fbm {
     void
-    ParticulateFlowParameters::declare(dealii::ParameterHandler &prm)
+    ParticulateFlowParameters::declare(dealii::ParameterHandler &prm,
+                                       const ParticleSetLayout  &layout)
     {
       fluid::FlowCaseParameters::declare(prm);
-      ParticleParameters::declare(prm);
+      ParticleParameters::declare(prm, layout);
       deformation::DeformationParameters::declare(prm);
       core::CheckpointParameters::declare(prm);
     }
@@ -22,22 +23,16 @@ namespace particulate {
 
     void
     ParticulateFlowParameters::parse(dealii::ParameterHandler &prm,
-                                     const std::string        &filename)
+                                     const core::InputOutline &outline)
     {
+      const std::string &filename = outline.filename();
       flow.parse(prm);
       // meshes named in the file are found next to it
       flow.mesh.base_directory
         = std::filesystem::path(filename).parent_path().string();
       if (flow.mesh.base_directory.empty())
         flow.mesh.base_directory = ".";
-      try
-        {
-          particles.parse(prm, flow.simulation.dimension);
-        }
-      catch (const std::runtime_error &e)
-        {
-          throw std::runtime_error(filename + ": " + e.what());
-        }
+      particles.parse(prm, flow.simulation.dimension, outline);
       checkpoint.parse(prm);
       deformation.parse(prm);
       if (flow.simulation.type == core::SimulationParameters::Type::fluid
@@ -72,10 +67,10 @@ namespace particulate {
       if (flow.simulation.type == core::SimulationParameters::Type::fluid
           && particles.n_particles() > 0)
         throw std::runtime_error(
-          filename
-          + ": subsection 'Particles' sets 'Positions', but 'Type' in "
-            "subsection 'Simulation' is 'fluid', which has no particles. Set "
-            "'Type = particulate flow'.");
+          outline.where({"Particles"})
+          + ": the case describes particles, but 'Type' in subsection "
+            "'Simulation' is 'fluid', which has none. Set 'Type = "
+            "particulate flow'.");
     }
 
 
@@ -84,16 +79,17 @@ namespace particulate {
     read_particulate_flow_case(const std::string &filename,
                                const std::string &overrides)
     {
+      const core::InputOutline outline(filename);
       dealii::ParameterHandler prm;
-      ParticulateFlowParameters::declare(prm);
-      core::parse_input_file(prm, filename);
+      ParticulateFlowParameters::declare(prm, ParticleSetLayout::of(outline));
+      core::parse_input_file(prm, outline);
       if (!overrides.empty())
         {
           std::istringstream stream(overrides);
           prm.parse_input(stream, filename + " (overrides)");
         }
       ParticulateFlowParameters parameters;
-      parameters.parse(prm, filename);
+      parameters.parse(prm, outline);
       return parameters;
     }
   } // namespace fbm

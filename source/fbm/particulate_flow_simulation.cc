@@ -6,6 +6,7 @@
 #include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
+#include <particulate/fbm/particle_set_checks.h>
 #include <particulate/fbm/particle_shape.h>
 #include <particulate/fbm/particulate_flow_output.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
@@ -21,11 +22,13 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -83,11 +86,11 @@ namespace particulate {
       Point<dim>                                     box_lower, box_upper;
       /// 2 per mirror plane: the loads and energies of the whole set-up
       unsigned int n_images = 1;
-      /// the one shape every body's description produces: the rigid body,
-      /// the interface and the mesh deformation all read it
-      std::shared_ptr<const geometry::Shape>              shape;
-      std::unique_ptr<PrescribedMotion<dim>>              prescribed;
-      std::vector<Eigen::Vector3d>                        initial_centres;
+      /// per particle: its motion where it is prescribed, else null
+      std::vector<std::unique_ptr<PrescribedMotion<dim>>> prescribed;
+      /// per particle: where it starts (a prescribed one at d(0), phi(0))
+      std::vector<Eigen::Vector3d>                        initial_positions;
+      std::vector<Eigen::Quaterniond>                     initial_orientations;
       std::unique_ptr<BodyAdaptedMesh<dim>>               adapted_mesh;
       deformation::DeformationReport                      initial_report;
       std::unique_ptr<fluid::NavierStokes<dim>>           flow;
@@ -108,6 +111,8 @@ namespace particulate {
       /// wall seconds of the last checkpoint
       double                 last_checkpoint = 0.;
       ParticulateFlowSummary summary;
+      /// some particle's motion is prescribed
+      bool any_prescribed = false;
       /// the mesh follows moving bodies at the start of every step
       bool mesh_follows = false;
       /// a free body shows the fluid a predicted interface
@@ -179,30 +184,39 @@ namespace particulate {
       const auto &particle_p = parameters.particles;
       const auto &time_p     = parameters.flow.time;
       if (time_p.scheme == core::TimeParameters::Scheme::steady
-          && particle_p.motion != ParticleParameters::Motion::fixed)
+          && (particle_p.any(ParticleMotion::free)
+              || particle_p.any(ParticleMotion::prescribed)))
         throw std::runtime_error(
           parameter_file
           + ": moving particles need a time-dependent scheme: set 'Scheme' "
             "in subsection 'Time' to 'fractional-step theta' (or set 'Motion "
-            "= fixed' in subsection 'Particles').");
+            "= fixed' for every particle).");
       if (particle_p.n_particles() == 0)
         throw std::runtime_error(
           parameter_file
-          + ": a 'particulate flow' run needs at least one particle: set "
-            "'Positions' in subsection 'Particles'.");
+          + ": a 'particulate flow' run needs at least one particle: add a "
+            "subsection 'Particle 0' (or a 'Particle file', 'Lattice' or "
+            "'Random fill') to subsection 'Particles'.");
       run_   = std::make_unique<Run>(parameters, communicator);
       Run &r = *run_;
 
       create_mesh();
-      if (particle_p.motion == ParticleParameters::Motion::prescribed)
-        r.prescribed = std::make_unique<PrescribedMotion<dim>>(
-          particle_p.prescribed_displacement,
-          time_p.end_time);
-      r.initial_centres = particle_p.positions;
-      if (r.prescribed)
-        for (auto &c : r.initial_centres)
-          c = r.prescribed->state(c, 0.).first;
-      r.shape = make_particle_shape(particle_p);
+      for (const ParticleDescription &p : particle_p.bodies)
+        {
+          r.prescribed.push_back(
+            p.motion == ParticleMotion::prescribed ?
+              std::make_unique<PrescribedMotion<dim>>(p, time_p.end_time) :
+              nullptr);
+          const PrescribedState start = r.prescribed.back() ?
+                                          r.prescribed.back()->state(0.) :
+                                          PrescribedState{p.position,
+                                                          p.velocity,
+                                                          p.orientation,
+                                                          p.angular_velocity};
+          r.initial_positions.push_back(start.position);
+          r.initial_orientations.push_back(start.orientation);
+        }
+      r.any_prescribed = particle_p.any(ParticleMotion::prescribed);
       adapt_mesh_to_bodies();
 
       r.flow = std::make_unique<fluid::NavierStokes<dim>>(parameters.flow.fluid,
@@ -230,11 +244,12 @@ namespace particulate {
         time_p.scheme == core::TimeParameters::Scheme::steady ?
           1. :
           time_p.end_time);
-      r.mesh_follows = r.adapted_mesh && !particle_p.motion_is_fixed();
-      r.predict_interface
-        = particle_p.motion == ParticleParameters::Motion::free
-          && (particle_p.extrapolate_constraint_velocity
-              || particle_p.midpoint_interface_position);
+      r.mesh_follows
+        = r.adapted_mesh
+          && (particle_p.any(ParticleMotion::free) || r.any_prescribed);
+      r.predict_interface = particle_p.any(ParticleMotion::free)
+                            && (particle_p.extrapolate_constraint_velocity
+                                || particle_p.midpoint_interface_position);
 
       impose_body_velocities();
       if (!parameters.restart)
@@ -265,14 +280,18 @@ namespace particulate {
                                                       parameter_file);
       std::tie(r.box_lower, r.box_upper)
         = core::global_bounding_box(r.tria, communicator);
-      for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
-        for (unsigned int d = 0; d < dim; ++d)
-          if (particle_p.positions[i][d] < r.box_lower[d]
-              || particle_p.positions[i][d] > r.box_upper[d])
-            throw std::runtime_error(
-              parameter_file
-              + ": subsection 'Particles', entry 'Positions': " + "particle "
-              + std::to_string(i) + " lies outside the mesh's bounding box.");
+      Eigen::Vector3d lower = Eigen::Vector3d::Zero(),
+                      upper = Eigen::Vector3d::Zero();
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = r.box_lower[d];
+          upper[d] = r.box_upper[d];
+        }
+      check_inside_box(particle_p.bodies,
+                       lower,
+                       upper,
+                       particle_p.symmetry_planes,
+                       dim);
       // mirror planes: the centres lie on them
       for (unsigned int f = 0; f < 2 * dim; ++f)
         if (particle_p.symmetry_planes[f])
@@ -281,15 +300,14 @@ namespace particulate {
             const unsigned int a     = f / 2;
             const double       plane = f % 2 ? r.box_upper[a] : r.box_lower[a];
             for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
-              if (std::abs(particle_p.positions[i][a] - plane)
+              if (std::abs(particle_p.bodies[i].position[a] - plane)
                   > 1e-9 * (r.box_upper[a] - r.box_lower[a]))
                 throw std::runtime_error(
-                  parameter_file
-                  + ": subsection 'Particles', entry 'Symmetry planes': "
-                    "particle "
+                  particle_p.bodies[i].origin + ": particle "
                   + std::to_string(i) + " does not lie on the mirror plane "
                   + "xyz"[a] + " = " + std::to_string(plane)
-                  + "; put its centre there or remove the plane.");
+                  + " of 'Symmetry planes'; put its centre there or remove "
+                    "the plane.");
           }
     }
 
@@ -307,16 +325,18 @@ namespace particulate {
                != deformation::DeformationParameters::Following::
                  carry_neighbourhood)
         return;
-      TimerOutput::Scope          scope(r.timer, "mesh deformation");
+      TimerOutput::Scope scope(r.timer, "mesh deformation");
+      std::vector<std::shared_ptr<const geometry::Shape>> shapes;
+      for (const ParticleDescription &p : parameters.particles.bodies)
+        shapes.push_back(p.shape);
+      r.adapted_mesh
+        = std::make_unique<BodyAdaptedMesh<dim>>(parameters.flow.mesh,
+                                                 parameters.deformation,
+                                                 shapes,
+                                                 r.tria);
       std::vector<geometry::Pose> poses;
-      for (const auto &c : r.initial_centres)
-        poses.emplace_back(Eigen::Matrix3d::Identity(), c);
-      r.adapted_mesh = std::make_unique<BodyAdaptedMesh<dim>>(
-        parameters.flow.mesh,
-        parameters.deformation,
-        std::vector<std::shared_ptr<const geometry::Shape>>(poses.size(),
-                                                            r.shape),
-        r.tria);
+      for (unsigned int i = 0; i < shapes.size(); ++i)
+        poses.emplace_back(r.initial_orientations[i], r.initial_positions[i]);
       r.initial_report   = r.adapted_mesh->adapt(poses);
       const auto &report = r.initial_report;
       r.pcout << "Mesh deformation: " << r.adapted_mesh->mesh().method_name()
@@ -334,9 +354,8 @@ namespace particulate {
       Run         &r          = *run_;
       const auto  &particle_p = parameters.particles;
       const double rho_f      = parameters.flow.fluid.properties.density;
-      const bool   free = particle_p.motion == ParticleParameters::Motion::free;
-      // Added-mass correction (RigidBodyUpdate): the engine integrates the
-      // particle with mass m + m_a, its density rho_p + C rho_f.
+      // Added-mass correction (RigidBodyUpdate): the engine integrates a
+      // free particle with mass m + m_a, its density rho_p + C rho_f.
       rigid::WorldParameters world_p;
       world_p.gravity = Eigen::Vector3d::Zero(); // applied as (dM) g
       world_p.contact_solver
@@ -347,35 +366,55 @@ namespace particulate {
                                  smallest_cell_edge(r.tria, communicator);
       r.world                = std::make_unique<rigid::World>(world_p);
       rigid::Material material;
-      material.name = "particle";
-      material.density
-        = particle_p.density + particle_p.added_mass_coefficient * rho_f;
       material.restitution     = particle_p.restitution;
       material.static_friction = material.dynamic_friction
         = particle_p.friction;
-      const unsigned int particle_material = r.world->add_material(material);
-      rigid::Material    wall_material     = material;
-      wall_material.name                   = "wall";
-      const unsigned int wall_material_id
-        = r.world->add_material(wall_material);
+      // one material per density the engine sees
+      std::map<double, unsigned int> material_of_density;
+      const auto material_for = [&](const double engine_density) {
+        const auto it = material_of_density.find(engine_density);
+        if (it != material_of_density.end())
+          return it->second;
+        rigid::Material m     = material;
+        m.name                = "particle";
+        m.density             = engine_density;
+        const unsigned int id = r.world->add_material(m);
+        material_of_density.emplace(engine_density, id);
+        return id;
+      };
 
       for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
         {
-          r.ids.push_back(r.world->add_body(r.shape,
+          const ParticleDescription &p    = particle_p.bodies[i];
+          const bool                 free = p.motion == ParticleMotion::free;
+          const unsigned int         particle_material = material_for(
+            p.density + particle_p.added_mass_coefficient * rho_f);
+          r.ids.push_back(r.world->add_body(p.shape,
                                             particle_material,
-                                            r.initial_centres[i],
-                                            Eigen::Quaterniond::Identity(),
+                                            r.initial_positions[i],
+                                            r.initial_orientations[i],
                                             !free));
           rigid::RigidBody &b = r.world->body(r.ids.back());
           // locked inside the engine, so that contacts cannot spend their
           // impulse on a rotation the coupling would discard
           b.lock_rotation(particle_p.locked_rotation);
-          if (free && !particle_p.velocities.empty())
-            b.linear_velocity = particle_p.velocities[i];
-          if (r.prescribed)
-            b.linear_velocity
-              = r.prescribed->state(particle_p.positions[i], 0.).second;
+          if (free)
+            {
+              b.linear_velocity  = p.velocity;
+              b.angular_velocity = p.angular_velocity;
+            }
+          if (r.prescribed[i])
+            {
+              const PrescribedState s = r.prescribed[i]->state(0.);
+              b.linear_velocity       = s.velocity;
+              b.angular_velocity      = s.angular_velocity;
+            }
         }
+      // walls are immovable: their density does not enter
+      rigid::Material wall_material = material;
+      wall_material.name            = "wall";
+      const unsigned int wall_material_id
+        = r.world->add_material(wall_material);
       for (unsigned int d = 0; d < dim; ++d)
         {
           Eigen::Vector3d n = Eigen::Vector3d::Zero();
@@ -410,12 +449,18 @@ namespace particulate {
       r.interface->set_marking(
         marking_from_name<dim>(particle_p.covered_nodes));
       r.interface->setup();
-      // the engine marks the nodes inside only: 'auto' keeps the hash grid
-      // for the other markings (checked for 'cuda' when parsing)
+      // the engine marks the nodes inside spheres and disks only: 'auto'
+      // keeps the hash grid for other markings and shapes (checked for
+      // 'cuda' when parsing)
+      const bool engine_takes_all_shapes
+        = std::all_of(particle_p.bodies.begin(),
+                      particle_p.bodies.end(),
+                      [](const ParticleDescription &p) {
+                        return is_rotation_invariant(*p.shape, dim);
+                      });
       if (particle_p.containment_backend == "cuda"
           || (particle_p.containment_backend == "auto"
-              && particle_p.covered_nodes == "inside"
-              && particle_p.shape != ParticleParameters::Shape::cylinder
+              && particle_p.covered_nodes == "inside" && engine_takes_all_shapes
               && cuda::ContainmentEngine::cuda_device_available()))
         r.interface->use_containment_engine(cuda::Backend::cuda);
       for (const auto id : r.ids)
@@ -531,7 +576,7 @@ namespace particulate {
           if (t > 0.)
             for (const auto &f : r.world->contact_forces(r.ids[i]))
               row.contact_force += f.force;
-          row.kinetic_energy = r.rigid_update.kinetic_energy(*row.body);
+          row.kinetic_energy = r.rigid_update.kinetic_energy(i, *row.body);
           row.nodes_inside   = nodes_inside[i];
           particles_energy += row.kinetic_energy;
           r.states[i].record_speed(row.body->linear_velocity.norm(), t);
@@ -598,6 +643,10 @@ namespace particulate {
           current.emplace_back(b.position,
                                b.linear_velocity,
                                b.angular_velocity);
+          // only free bodies are predicted; the others are where and how
+          // they move over the step
+          if (particle_p.bodies[i].motion != ParticleMotion::free)
+            continue;
           if (particle_p.midpoint_interface_position)
             b.position
               += 0.5 * k * (b.linear_velocity + 0.5 * k * s.acceleration);
@@ -629,12 +678,15 @@ namespace particulate {
     {
       Run         &r     = *run_;
       const double t_new = t + k;
-      if (r.prescribed)
-        for (unsigned int i = 0; i < r.ids.size(); ++i)
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        if (r.prescribed[i])
           {
-            rigid::RigidBody &b = r.world->body(r.ids[i]);
-            std::tie(b.position, b.linear_velocity)
-              = r.prescribed->state(parameters.particles.positions[i], t_new);
+            rigid::RigidBody     &b = r.world->body(r.ids[i]);
+            const PrescribedState s = r.prescribed[i]->state(t_new);
+            b.position              = s.position;
+            b.linear_velocity       = s.velocity;
+            b.orientation           = s.orientation;
+            b.angular_velocity      = s.angular_velocity;
           }
       if (!r.mesh_follows)
         return;
@@ -661,7 +713,7 @@ namespace particulate {
       // bodies that moved before the step (prescribed, or carrying the
       // mesh) are marked where the step starts; the others were marked at
       // the end of the step before
-      if (run_->prescribed || run_->mesh_follows)
+      if (run_->any_prescribed || run_->mesh_follows)
         impose_body_velocities();
       if (run_->predict_interface)
         impose_predicted_interface(k);
@@ -749,7 +801,7 @@ namespace particulate {
       ++step;
       // bodies that do not move before a step are marked where it ends:
       // the interface of the next step, which the output at t_n+1 shows
-      if (!(r.prescribed || r.mesh_follows))
+      if (!(r.any_prescribed || r.mesh_follows))
         impose_body_velocities();
     }
 

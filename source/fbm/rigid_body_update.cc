@@ -7,42 +7,49 @@ namespace particulate {
   namespace fbm {
     RigidBodyUpdate::RigidBodyUpdate(const ParticleParameters &particles,
                                      const double              fluid_density)
-      : particle_density(particles.density)
-      , fluid_density(fluid_density)
+      : fluid_density(fluid_density)
       , gravity(particles.gravity)
-      , free(particles.motion == ParticleParameters::Motion::free)
       , locked_translation(particles.locked_translation)
       , locked_rotation(particles.locked_rotation)
-    {}
+    {
+      for (const ParticleDescription &p : particles.bodies)
+        {
+          particle_density.push_back(p.density);
+          free.push_back(p.motion == ParticleMotion::free);
+        }
+    }
 
 
 
     double
-    RigidBodyUpdate::true_mass(const rigid::RigidBody &body) const
+    RigidBodyUpdate::true_mass(const unsigned int      i,
+                               const rigid::RigidBody &body) const
     {
-      return particle_density * body.volume();
+      return particle_density[i] * body.volume();
     }
 
 
 
     Eigen::Matrix3d
-    RigidBodyUpdate::true_inertia_world(const rigid::RigidBody &body) const
+    RigidBodyUpdate::true_inertia_world(const unsigned int      i,
+                                        const rigid::RigidBody &body) const
     {
       // from the shape, not the engine's body: a fixed or prescribed
       // particle is an immovable body of infinite inertia in the engine
       const Eigen::Matrix3d R = body.rotation();
-      return R * (particle_density * body.shape().unit_inertia())
+      return R * (particle_density[i] * body.shape().unit_inertia())
              * R.transpose();
     }
 
 
 
     double
-    RigidBodyUpdate::kinetic_energy(const rigid::RigidBody &body) const
+    RigidBodyUpdate::kinetic_energy(const unsigned int      i,
+                                    const rigid::RigidBody &body) const
     {
-      return 0.5 * true_mass(body) * body.linear_velocity.squaredNorm()
+      return 0.5 * true_mass(i, body) * body.linear_velocity.squaredNorm()
              + 0.5
-                 * body.angular_velocity.dot(true_inertia_world(body)
+                 * body.angular_velocity.dot(true_inertia_world(i, body)
                                              * body.angular_velocity);
     }
 
@@ -50,16 +57,17 @@ namespace particulate {
 
     void
     RigidBodyUpdate::apply_loads(rigid::World            &world,
+                                 const unsigned int       i,
                                  const rigid::BodyId      id,
                                  const BodyCouplingState &state) const
     {
       const rigid::RigidBody &b   = world.body(id);
-      const double            m_a = b.mass() - true_mass(b);
+      const double            m_a = b.mass() - true_mass(i, b);
       Eigen::Vector3d         force
         = state.fluid_load.force
-          + (particle_density - fluid_density) * b.volume() * gravity
+          + (particle_density[i] - fluid_density) * b.volume() * gravity
           + m_a * state.acceleration;
-      const Eigen::Matrix3d I_a = b.inertia_world() - true_inertia_world(b);
+      const Eigen::Matrix3d I_a = b.inertia_world() - true_inertia_world(i, b);
       Eigen::Vector3d       torque
         = state.fluid_load.torque + I_a * state.angular_acceleration;
       for (unsigned int d = 0; d < 3; ++d)
@@ -131,14 +139,14 @@ namespace particulate {
           old_angular[i]            = b.angular_velocity;
           old_position[i]           = b.position;
           old_orientation[i]        = b.orientation;
-          if (free)
-            apply_loads(world, ids[i], states[i]);
+          if (free[i])
+            apply_loads(world, i, ids[i], states[i]);
         }
       world.step(time_step);
-      if (!free)
-        return;
       for (unsigned int i = 0; i < n; ++i)
         {
+          if (!free[i])
+            continue;
           rigid::RigidBody &b = world.body(ids[i]);
           restore_locked_axes(b, old_position[i], old_orientation[i]);
           if (!b.linear_velocity.allFinite() || !b.position.allFinite())

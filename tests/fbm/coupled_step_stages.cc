@@ -65,7 +65,7 @@ main(int argc, char **argv)
   const auto &state = [&]() -> const fbm::BodyCouplingState & {
     return staged.coupling_states()[0];
   };
-  checker.check(body().position == p.positions[0]
+  checker.check(body().position == p.bodies[0].position
                   && body().linear_velocity.isZero(),
                 "set_up: the disk at its position, at rest");
   checker.check(staged.n_covered_nodes()[0] > 0,
@@ -73,11 +73,11 @@ main(int argc, char **argv)
 
   // step 1: everything at rest
   staged.move_mesh(k);
-  checker.check(body().position == p.positions[0],
+  checker.check(body().position == p.bodies[0].position,
                 "move_mesh: a free disk on a fixed mesh stays before the step");
   staged.impose_interface(k);
   checker.check(state().imposed_velocity.isZero()
-                  && state().load_centre == p.positions[0],
+                  && state().load_centre == p.bodies[0].position,
                 "impose_interface: the disk's rest, about its centre");
   staged.advance_fluid(k);
   checker.check(staged.fluid_kinetic_energy() < 1e-30,
@@ -86,7 +86,8 @@ main(int argc, char **argv)
   checker.check(state().fluid_load.force.norm() < 1e-12,
                 "compute_loads: no load from a fluid at rest");
   staged.advance_bodies(k);
-  const double free_fall = (p.density - rho_f) / (p.density + rho_f) * 9.81 * k;
+  const double rho_p     = p.bodies[0].density;
+  const double free_fall = (rho_p - rho_f) / (rho_p + rho_f) * 9.81 * k;
   checker.check_relative(-body().linear_velocity[1],
                          free_fall,
                          1e-14,

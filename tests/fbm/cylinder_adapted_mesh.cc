@@ -55,9 +55,9 @@ main(int argc, char **argv)
   core::create_mesh(parameters.flow.mesh, tria);
   fbm::BodyAdaptedMesh<3> mesh(parameters.flow.mesh,
                                parameters.deformation,
-                               {fbm::make_particle_shape(parameters.particles)},
+                               {parameters.particles.bodies[0].shape},
                                tria);
-  const Eigen::Vector3d   centre = parameters.particles.positions.at(0);
+  const Eigen::Vector3d   centre = parameters.particles.bodies.at(0).position;
   const auto              report
     = mesh.adapt({geometry::Pose(Eigen::Matrix3d::Identity(), centre)});
 

@@ -135,8 +135,8 @@ main(int argc, char **argv)
     const std::string tight
       = "subsection Mesh\n set Refinements = 0\nend\n"
         "subsection Time\n set End time = 0.02\nend\n"
-        "subsection Particles\n set Velocities = 0, 0, -0.05\n"
-        " set Covered nodes = nearest\nend\n"
+        "subsection Particles\n set Covered nodes = nearest\n"
+        " subsection Particle 0\n  set Velocity = 0, 0, -0.05\n end\nend\n"
         "subsection Nonlinear solver\n set Absolute tolerance = 1e-14\n"
         " set Relative tolerance = 1e-10\nend\n"
         "subsection Linear solver\n set Relative tolerance = 1e-8\n"

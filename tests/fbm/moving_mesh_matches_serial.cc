@@ -17,6 +17,7 @@
 
 #include <particulate/fbm/particulate_flow_simulation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -94,18 +95,13 @@ namespace {
   }
 
   /** Smallest and largest count of velocity nodes inside particle 0 over
-   *  its time series (last column of particle_0.dat). */
+   *  its time series (column nodes_inside of particle_0.dat). */
   std::pair<double, double>
   nodes_inside_range(const std::string &file)
   {
-    const auto rows = testing::read_time_series(file);
-    double     lo = 1e300, hi = -1e300;
-    for (const auto &row : rows)
-      {
-        lo = std::min(lo, row.back());
-        hi = std::max(hi, row.back());
-      }
-    return {lo, hi};
+    const auto nodes = testing::read_column(file, "nodes_inside");
+    return {*std::min_element(nodes.begin(), nodes.end()),
+            *std::max_element(nodes.begin(), nodes.end())};
   }
 } // namespace
 

@@ -24,7 +24,8 @@ namespace {
       testing::source_path("prm/settling-disk/settling-disk.prm"),
       "subsection Mesh\n set Refinements = 4\nend\n"
       "subsection Time\n set End time = 0.015\nend\n"
-      "subsection Particles\n set Velocities = 0.02, -0.02\n"
+      "subsection Particles\n"
+      " subsection Particle 0\n  set Velocity = 0.02, -0.02\n end\n"
       " set Covered nodes = "
         + marking
         + "\nend\n"

@@ -66,8 +66,9 @@ namespace {
       "subsection Time\n set Time step = 0.0009765625\n set End time = "
         + exact(end_time)
         + "\nend\n"
-          "subsection Particles\n set Positions = 0.01, 0.0027\n"
-          " set Velocities = 0.03, -0.04\n"
+          "subsection Particles\n subsection Particle 0\n"
+          "  set Position = 0.01, 0.0027\n  set Velocity = 0.03, -0.04\n"
+          " end\n"
         + particle_entries
         + "end\n"
           "subsection Output\n set Interval = 10\nend\n"

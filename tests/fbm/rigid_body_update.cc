@@ -39,8 +39,11 @@ namespace {
   fbm::ParticleParameters
   particles()
   {
-    fbm::ParticleParameters p;
-    p.density                = rho_p;
+    fbm::ParticleParameters  p;
+    fbm::ParticleDescription particle;
+    particle.shape   = std::make_shared<geometry::Sphere>(radius);
+    particle.density = rho_p;
+    p.bodies.push_back(particle);
     p.gravity                = Eigen::Vector3d(0., 0., -9.81);
     p.added_mass_coefficient = 1.;
     return p;
@@ -55,7 +58,7 @@ namespace {
     world_p.gravity = Eigen::Vector3d::Zero();
     rigid::World    world(world_p);
     rigid::Material material;
-    material.density = p.density + p.added_mass_coefficient * rho_f;
+    material.density = rho_p + p.added_mass_coefficient * rho_f;
     world.add_material(material);
     if (floor)
       world.add_body(
@@ -94,7 +97,7 @@ namespace {
                 worst,
                 r);
     check(worst < 1e-12, "acceleration follows a (1 - r^n)");
-    check(std::abs(update.true_mass(world.body(id))
+    check(std::abs(update.true_mass(0, world.body(id))
                    - rho_p * 4. / 3. * M_PI * std::pow(radius, 3))
             < 1e-15,
           "true mass");
@@ -162,8 +165,8 @@ namespace {
   void
   fixed_and_diverging()
   {
-    auto p   = particles();
-    p.motion = fbm::ParticleParameters::Motion::fixed;
+    auto p             = particles();
+    p.bodies[0].motion = fbm::ParticleMotion::fixed;
     {
       rigid::World        world = make_world(p, false);
       const rigid::BodyId id
@@ -179,7 +182,7 @@ namespace {
               && states[0].acceleration.isZero(),
             "a fixed particle stays");
     }
-    p.motion                  = fbm::ParticleParameters::Motion::free;
+    p.bodies[0].motion        = fbm::ParticleMotion::free;
     rigid::World        world = make_world(p, false);
     const rigid::BodyId id
       = world.add_body(std::make_shared<geometry::Sphere>(radius),

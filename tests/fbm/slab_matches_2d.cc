@@ -80,7 +80,8 @@ namespace {
       = testing::read_time_series(output + "/flow.dat").back().at(1);
     outcome.particle_series
       = testing::read_time_series(output + "/particle_0.dat");
-    outcome.covered_nodes = outcome.particle_series.back().back();
+    outcome.covered_nodes
+      = testing::read_column(output + "/particle_0.dat", "nodes_inside").back();
     return outcome;
   }
 } // namespace
@@ -92,18 +93,21 @@ main(int argc, char **argv)
   testing::Checker                         checker;
 
   const Outcome planar = run<2>("", "slab_2d");
-  const Outcome slab   = run<3>(
-    "subsection Simulation\n set Dimension = 3\nend\n"
-      "subsection Mesh\n set Lower corner = 0, 0, 0\n"
-      " set Upper corner = 2.2, 0.41, 0.1025\n"
-      " set Subdivisions = 22, 4, 1\nend\n"
-      "subsection Boundary conditions\n set No-slip = 0, 1, 2, 3\n"
-      " set Free-slip = 4, 5\nend\n"
-      "subsection Particles\n set Shape = cylinder\n set Length = 0.1025\n"
-      " set Positions = 1.1, 0.2, 0.05125\n"
-      " set Prescribed displacement = A * sin(2 * pi * f * t); 0; 0\n"
-      " set Domain walls = x-, x+, y-, y+\nend\n",
-    "slab_3d");
+  const Outcome slab
+    = run<3>("subsection Simulation\n set Dimension = 3\nend\n"
+             "subsection Mesh\n set Lower corner = 0, 0, 0\n"
+             " set Upper corner = 2.2, 0.41, 0.1025\n"
+             " set Subdivisions = 22, 4, 1\nend\n"
+             "subsection Boundary conditions\n set No-slip = 0, 1, 2, 3\n"
+             " set Free-slip = 4, 5\nend\n"
+             "subsection Particles\n"
+             " subsection Shape disk\n  set Type = cylinder\n"
+             "  set Length = 0.1025\n end\n"
+             " subsection Particle 0\n  set Position = 1.1, 0.2, 0.05125\n"
+             "  set Prescribed displacement = A * sin(2 * pi * f * t); 0; 0\n"
+             " end\n"
+             " set Domain walls = x-, x+, y-, y+\nend\n",
+             "slab_3d");
 
   checker.check(planar.covered_nodes > 0., "the 2D disk covers velocity nodes");
   checker.check(slab.covered_nodes == node_layers * planar.covered_nodes,

@@ -93,11 +93,11 @@ main(int argc, char **argv)
     "fbm_sphere_in_container_output/particle_0.dat");
   const std::vector<double> row
     = series.empty() ? std::vector<double>() : series.back();
-  bool finite = row.size() == 21;
+  bool finite = row.size() == 25;
   for (const double v : row)
     finite = finite && std::isfinite(v);
   checker.check(finite && row[19] == 0.,
-                "fixed particle's time series: all 21 columns finite, "
+                "fixed particle's time series: all 25 columns finite, "
                 "kinetic energy 0");
   return checker.exit_code();
 }

@@ -22,8 +22,9 @@ main(int argc, char **argv)
     testing::source_path("prm/settling-disk/settling-disk.prm"),
     "subsection Mesh\n set Refinements = 5\nend\n"
     "subsection Time\n set End time = 0.08\nend\n"
-    "subsection Particles\n set Positions = 0.01, 0.0025\n"
-    " set Velocities = 0, -0.02\n set Contact distance = auto\nend\n");
+    "subsection Particles\n subsection Particle 0\n"
+    "  set Position = 0.01, 0.0025\n  set Velocity = 0, -0.02\n end\n"
+    " set Contact distance = auto\nend\n");
   const std::string output         = "wall_contact";
   parameters.flow.output.directory = output;
   parameters.flow.output.write_vtu = false;
@@ -33,10 +34,11 @@ main(int argc, char **argv)
                                                MPI_COMM_SELF);
   const auto                        summary = simulation.run();
 
-  const auto  &p      = parameters.particles;
+  const auto  &p      = parameters.particles.bodies.at(0);
+  const double radius = p.shape->bounding_box().upper[0];
   const double h      = 0.02 / 32.; // 20 mm box width, 2^5 cells
   const double weight = (p.density - parameters.flow.fluid.properties.density)
-                        * M_PI * p.radius * p.radius * 9.81;
+                        * M_PI * radius * radius * 9.81;
   // the time series: force (columns 11, 12) and contact force (17, 18)
   const auto series    = testing::read_time_series(output + "/particle_0.dat");
   double     max_force = 0., fluid_y = 0., contact_y = 0., gap = 0.;
@@ -45,7 +47,7 @@ main(int argc, char **argv)
       max_force = std::max(max_force, std::hypot(c[10], c[11]));
       fluid_y   = c[11];
       contact_y = c[17];
-      gap       = c[2] - p.radius;
+      gap       = c[2] - radius;
     }
   const std::size_t rows = series.size();
   std::cout << "rows " << rows << ", final gap " << gap << " m (h = " << h

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,27 @@ namespace particulate {
             rows.push_back(std::move(row));
           }
       return rows;
+    }
+
+    /** Column @p name of the time series @p file, found by the names of
+     *  its header line ('# time x y ...'); throws if it has none such. */
+    inline std::vector<double>
+    read_column(const std::string &file, const std::string &name)
+    {
+      std::ifstream in(file);
+      std::string   header;
+      std::getline(in, header);
+      std::istringstream names(header.substr(header.find('#') + 1));
+      std::size_t        index = 0;
+      for (std::string word; names >> word; ++index)
+        if (word == name)
+          {
+            std::vector<double> column;
+            for (const auto &row : read_time_series(file))
+              column.push_back(row.at(index));
+            return column;
+          }
+      throw std::runtime_error(file + " has no column '" + name + "'");
     }
 
     /** .prm text for solver tolerances under which runs that differ only

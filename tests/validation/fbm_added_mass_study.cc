@@ -59,7 +59,8 @@ namespace {
                   "subsection Mesh\n set Refinements = 4\nend\n"
                   "subsection Time\n set Time step = %.10g\n"
                   " set End time = 0.05\nend\n"
-                  "subsection Particles\n set Density = %.10g\n"
+                  "subsection Particles\n"
+                  " subsection Shape disk\n  set Density = %.10g\n end\n"
                   " set Added mass coefficient = %.10g\n%s"
                   "end\n",
                   dt,

@@ -1,6 +1,8 @@
 #ifndef particulate_core_input_file_h
 #define particulate_core_input_file_h
 
+#include <particulate/core/input_outline.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <ostream>
@@ -32,6 +34,11 @@ namespace particulate {
     void
     parse_input_file(dealii::ParameterHandler &prm,
                      const std::string        &filename);
+
+    /** The same for a file whose outline was read already. */
+    void
+    parse_input_file(dealii::ParameterHandler &prm,
+                     const InputOutline       &outline);
 
     /**
      * The edit (Levenshtein) distance between two strings, ignoring case.

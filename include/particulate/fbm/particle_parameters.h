@@ -1,7 +1,9 @@
 #ifndef particulate_fbm_particle_parameters_h
 #define particulate_fbm_particle_parameters_h
 
-#include <particulate/core/function_expression.h>
+#include <particulate/core/input_outline.h>
+#include <particulate/fbm/particle_description.h>
+#include <particulate/fbm/particle_set_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -16,40 +18,16 @@ namespace particulate {
   namespace fbm {
     /**
      * subsection `Particles`: the rigid bodies of a fictitious-boundary run
-     * (thesis §5.2-5.3) and the coupling options. All particles share one
-     * shape, size and material; their number is the number of `Positions`.
+     * (thesis §5.2-5.3) and the coupling options. The particles are
+     * described one by one (`Particle <n>`), from a particle file, by
+     * lattices and by random fills, each naming a shape template (`Shape
+     * <name>`); see particle_set_parameters.h.
      */
     struct ParticleParameters
     {
-      /** Ball in 3D; disk (a cylinder of unit depth along z) in 2D. */
-      enum class Shape
-      {
-        sphere,
-        disk,
-        cylinder ///< 3D: a circular cylinder along z of length 'Length'
-      };
-      /** How the particles move. */
-      enum class Motion
-      {
-        free,      ///< Newton-Euler under fluid, gravity and contact forces
-        fixed,     ///< at rest (an obstacle described by the FBM)
-        prescribed ///< translated by a given displacement d(t)
-      };
-
-      Shape  shape  = Shape::sphere;
-      double radius = 0.0075; ///< [m]
-      /// Shape::cylinder: length along z [m]
-      double length  = 0.;
-      double density = 1120.; ///< particle density rho_p [kg/m^3]
-      Motion motion  = Motion::free;
-      /// Motion::prescribed: displacement from the initial position [m],
-      /// dim components of t
-      core::FunctionExpression prescribed_displacement;
-      /// centres of mass [m] (z = 0 in 2D)
-      std::vector<Eigen::Vector3d> positions;
-      /// initial velocities [m/s], empty or one per particle
-      std::vector<Eigen::Vector3d> velocities;
-      Eigen::Vector3d              gravity = Eigen::Vector3d(0., 0., -9.81);
+      /// every particle of the run, in the order of their ids
+      std::vector<ParticleDescription> bodies;
+      Eigen::Vector3d                  gravity = Eigen::Vector3d(0., 0., -9.81);
       /// world axes along which the particles may not move (symmetry)
       std::array<bool, 3> locked_translation = {{false, false, false}};
       /// world axes about which the particles may not rotate
@@ -87,28 +65,34 @@ namespace particulate {
       std::array<bool, 6> symmetry_planes
         = {{false, false, false, false, false, false}};
 
+      /**
+       * Declare the entries, with the list subsections of @p layout (those
+       * the case file holds; see ParticleSetLayout).
+       */
       static void
-      declare(dealii::ParameterHandler &prm);
+      declare(dealii::ParameterHandler &prm, const ParticleSetLayout &layout);
 
       /**
        * Read the entries; @p dim is the space dimension of the run (it
-       * decides how many coordinates a position has). Throws
-       * std::runtime_error with the entry and what to write.
+       * decides how many coordinates a position has).
+       * @param outline the case file, for the file and line of messages
+       * @throw std::runtime_error naming the file, line and entry and what
+       *   to write
        */
       void
-      parse(dealii::ParameterHandler &prm, const unsigned int dim);
-
-      bool
-      motion_is_fixed() const
-      {
-        return motion == Motion::fixed;
-      }
+      parse(dealii::ParameterHandler &prm,
+            const unsigned int        dim,
+            const core::InputOutline &outline);
 
       unsigned int
       n_particles() const
       {
-        return positions.size();
+        return bodies.size();
       }
+
+      /** Whether some particle moves as @p motion. */
+      bool
+      any(const ParticleMotion motion) const;
     };
   } // namespace fbm
 } // namespace particulate

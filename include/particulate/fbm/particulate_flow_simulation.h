@@ -39,14 +39,17 @@ namespace particulate {
       /// continue from the checkpoint in the output folder (--restart)
       bool restart = false;
 
-      /** Declare every entry a case file may set. */
+      /** Declare every entry a case file may set, with the particle list
+       *  subsections of @p layout (ParticleSetLayout::of() the case file,
+       *  or ParticleSetLayout::documentation()). */
       static void
-      declare(dealii::ParameterHandler &prm);
+      declare(dealii::ParameterHandler &prm, const ParticleSetLayout &layout);
 
-      /** Read the entries of the already parsed @p prm; @p filename names
-       *  the case in messages and locates its mesh files. */
+      /** Read the entries of the already parsed @p prm; @p outline is the
+       *  case file: it names the case, the file and line in messages, and
+       *  locates its mesh and particle files. */
       void
-      parse(dealii::ParameterHandler &prm, const std::string &filename);
+      parse(dealii::ParameterHandler &prm, const core::InputOutline &outline);
     };
 
     /**

@@ -35,8 +35,8 @@ namespace particulate {
     {
     public:
       /**
-       * @param particles the particles' density, gravity, motion and locked
-       *   axes
+       * @param particles the particles' densities and motions (body i of
+       *   advance() is particle i), gravity and locked axes
        * @param fluid_density rho_f [kg/m^3]
        */
       RigidBodyUpdate(const ParticleParameters &particles,
@@ -56,23 +56,26 @@ namespace particulate {
               const double                      time_step,
               const double                      time) const;
 
-      /** The true mass of @p body, rho_p V [kg] (the engine's includes
-       *  the added mass, or is infinite for a body that does not move). */
+      /** The true mass of particle @p i, whose body is @p body, rho_p V
+       *  [kg] (the engine's includes the added mass, or is infinite for a
+       *  body that does not move). */
       double
-      true_mass(const rigid::RigidBody &body) const;
+      true_mass(const unsigned int i, const rigid::RigidBody &body) const;
 
       /** Its true inertia tensor in the world frame [kg m^2]. */
       Eigen::Matrix3d
-      true_inertia_world(const rigid::RigidBody &body) const;
+      true_inertia_world(const unsigned int      i,
+                         const rigid::RigidBody &body) const;
 
       /** Its kinetic energy with the true mass and inertia [J]. */
       double
-      kinetic_energy(const rigid::RigidBody &body) const;
+      kinetic_energy(const unsigned int i, const rigid::RigidBody &body) const;
 
     private:
       /** Force and torque the engine gets for @p body over the step. */
       void
       apply_loads(rigid::World            &world,
+                  const unsigned int       i,
                   const rigid::BodyId      id,
                   const BodyCouplingState &state) const;
 
@@ -89,10 +92,12 @@ namespace particulate {
                             const rigid::BodyId id,
                             Eigen::Vector3d    &acceleration);
 
-      double              particle_density;
+      /// rho_p of each particle [kg/m^3]
+      std::vector<double> particle_density;
+      /// whether each particle moves freely
+      std::vector<bool>   free;
       double              fluid_density;
       Eigen::Vector3d     gravity;
-      bool                free;
       std::array<bool, 3> locked_translation;
       std::array<bool, 3> locked_rotation;
     };

@@ -1,0 +1,87 @@
+#ifndef particulate_fbm_particle_generators_h
+#define particulate_fbm_particle_generators_h
+
+#include <particulate/geometry/pose.h>
+#include <particulate/geometry/shape.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace particulate {
+  namespace fbm {
+    /**
+     * The radius of the ball (3D) or of the disk about the body's z axis
+     * (2D, where bodies are prisms along z) that holds @p shape however it
+     * turns in a run of dimension @p dim [m].
+     */
+    double
+    placement_radius(const geometry::Shape &shape, const unsigned int dim);
+
+    /** A ball (3D) or disk (2D) that a placed particle occupies. */
+    struct OccupiedBall
+    {
+      Eigen::Vector3d centre;
+      double          radius;
+    };
+
+    /**
+     * Particles on a regular lattice: centres first + (i, j, k) * spacing
+     * for i < counts[0], j < counts[1], k < counts[2] (x fastest), all with
+     * one orientation. A 2D run uses the first two counts.
+     */
+    struct ParticleLattice
+    {
+      Eigen::Vector3d             first   = Eigen::Vector3d::Zero(); ///< [m]
+      Eigen::Vector3d             spacing = Eigen::Vector3d::Zero(); ///< [m]
+      std::array<unsigned int, 3> counts  = {{1, 1, 1}};
+
+      /** The centres [m] of a @p dim-dimensional run. */
+      std::vector<Eigen::Vector3d>
+      centres(const unsigned int dim) const;
+    };
+
+    /**
+     * A random non-overlapping fill of the box [lower, upper] with copies of
+     * one shape at a given solid fraction (random sequential addition): the
+     * number of particles is the solid fraction times the box's volume (2D:
+     * area) over the shape's, rounded; each is placed at a uniformly random
+     * centre, with a uniformly random orientation if asked, and kept if the
+     * ball of its placement_radius() lies in the box and meets no ball
+     * placed before it, of this fill or given as occupied. Balls that do
+     * not overlap are a sufficient condition for bodies that do not.
+     *
+     * Random sequential addition of equal balls jams near a solid fraction
+     * of 0.38 (3D) and 0.55 (2D) of the balls; elongated shapes reach less.
+     * The same seed gives the same particles on every machine.
+     */
+    struct RandomFill
+    {
+      Eigen::Vector3d lower              = Eigen::Vector3d::Zero(); ///< [m]
+      Eigen::Vector3d upper              = Eigen::Vector3d::Zero(); ///< [m]
+      double          solid_fraction     = 0.;                      ///< [-]
+      unsigned int    seed               = 1;
+      bool            random_orientation = false;
+
+      /**
+       * The poses of the particles of shape @p shape, placed around
+       * @p occupied, with @p orientation where they are not turned at
+       * random.
+       * @throw std::runtime_error when no particle fits or 1000 tries per
+       *   particle do not place them all (saying how many were placed)
+       */
+      std::vector<geometry::Pose>
+      place(const geometry::Shape           &shape,
+            const unsigned int               dim,
+            const Eigen::Quaterniond        &orientation,
+            const std::vector<OccupiedBall> &occupied) const;
+
+      /** The number of particles the fill places. */
+      unsigned int
+      n_particles(const geometry::Shape &shape, const unsigned int dim) const;
+    };
+  } // namespace fbm
+} // namespace particulate
+
+#endif

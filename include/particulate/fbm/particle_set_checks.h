@@ -1,0 +1,42 @@
+#ifndef particulate_fbm_particle_set_checks_h
+#define particulate_fbm_particle_set_checks_h
+
+#include <particulate/fbm/particle_description.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace particulate {
+  namespace fbm {
+    /**
+     * Refuse initial particles that overlap: each pair whose bounding
+     * balls meet is tested with the rigid engine's narrow phase (exact for
+     * the analytic shapes); a penetration deeper than 1e-9 of the smaller
+     * body's size stops the run. Touching is allowed.
+     * @throw std::runtime_error naming both particles, where each was
+     *   described, and the depth
+     */
+    void
+    check_no_overlap(const std::vector<ParticleDescription> &particles,
+                     const unsigned int                      dim);
+
+    /**
+     * Refuse a particle that reaches outside the box [lower, upper] of the
+     * mesh: its bounding box, placed, must lie inside, except across the
+     * faces that are @p mirror_planes (x-, x+, y-, y+, z-, z+), on which
+     * bodies of a symmetric set-up are cut. A 2D run checks x and y.
+     * @throw std::runtime_error naming the particle and where it was
+     *   described
+     */
+    void
+    check_inside_box(const std::vector<ParticleDescription> &particles,
+                     const Eigen::Vector3d                  &lower,
+                     const Eigen::Vector3d                  &upper,
+                     const std::array<bool, 6>              &mirror_planes,
+                     const unsigned int                      dim);
+  } // namespace fbm
+} // namespace particulate
+
+#endif

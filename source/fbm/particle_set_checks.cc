@@ -1,0 +1,127 @@
+#include <particulate/fbm/particle_set_checks.h>
+#include <particulate/geometry/pose.h>
+#include <particulate/rigid/narrow_phase.h>
+#include <particulate/rigid/rigid_body.h>
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fbm {
+    namespace {
+      /** The placed body of @p p, immovable (no mass properties needed). */
+      rigid::RigidBody
+      placed_body(const ParticleDescription &p)
+      {
+        rigid::RigidBody body(p.shape, 0, 1., true);
+        body.position    = p.position;
+        body.orientation = p.orientation;
+        return body;
+      }
+
+      /** The deepest penetration of two placed particles [m] (0 if they
+       *  are apart or touch). */
+      double
+      penetration(const ParticleDescription &a, const ParticleDescription &b)
+      {
+        rigid::ContactEdge edge;
+        edge.manifold.a = 0;
+        edge.manifold.b = 1;
+        rigid::NarrowPhase::collide(placed_body(a), placed_body(b), 0., edge);
+        double depth = 0.;
+        for (const auto &c : edge.manifold.points)
+          depth = std::max(depth, -c.distance);
+        return depth;
+      }
+    } // namespace
+
+
+
+    void
+    check_no_overlap(const std::vector<ParticleDescription> &particles,
+                     const unsigned int                      dim)
+    {
+      // sweep along x over the bounding balls, then the exact test
+      const unsigned int  n = particles.size();
+      std::vector<double> radius(n);
+      for (unsigned int i = 0; i < n; ++i)
+        radius[i] = particles[i].shape->bounding_radius();
+      std::vector<unsigned int> order(n);
+      std::iota(order.begin(), order.end(), 0u);
+      std::sort(order.begin(),
+                order.end(),
+                [&](unsigned int i, unsigned int j) {
+                  return particles[i].position[0] - radius[i]
+                         < particles[j].position[0] - radius[j];
+                });
+      for (unsigned int s = 0; s < n; ++s)
+        for (unsigned int t = s + 1; t < n; ++t)
+          {
+            const unsigned int i = order[s], j = order[t];
+            if (particles[j].position[0] - radius[j]
+                > particles[i].position[0] + radius[i])
+              break;
+            Eigen::Vector3d d = particles[j].position - particles[i].position;
+            if (dim == 2)
+              d[2] = 0.;
+            if (d.norm() >= radius[i] + radius[j])
+              continue;
+            const double depth = penetration(particles[i], particles[j]);
+            const double size  = std::min(particles[i].shape->bounding_radius(),
+                                         particles[j].shape->bounding_radius());
+            if (depth > 1e-9 * size)
+              {
+                std::ostringstream message;
+                message << "particles " << std::min(i, j) << " and "
+                        << std::max(i, j) << " overlap by " << depth
+                        << " m at the start:\n  "
+                        << particles[std::min(i, j)].origin << "\n  "
+                        << particles[std::max(i, j)].origin
+                        << "\nMove them apart (they may touch).";
+                throw std::runtime_error(message.str());
+              }
+          }
+    }
+
+
+
+    void
+    check_inside_box(const std::vector<ParticleDescription> &particles,
+                     const Eigen::Vector3d                  &lower,
+                     const Eigen::Vector3d                  &upper,
+                     const std::array<bool, 6>              &mirror_planes,
+                     const unsigned int                      dim)
+    {
+      const double tolerance = 1e-9 * (upper - lower).head(dim).norm();
+      for (unsigned int i = 0; i < particles.size(); ++i)
+        {
+          const ParticleDescription  &p = particles[i];
+          const geometry::BoundingBox box
+            = geometry::Pose(p.orientation, p.position)
+                .to_world(p.shape->bounding_box());
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const bool below = box.lower[d] < lower[d] - tolerance
+                                 && !(mirror_planes[2 * d]
+                                      && p.position[d] >= lower[d] - tolerance);
+              const bool above = box.upper[d] > upper[d] + tolerance
+                                 && !(mirror_planes[2 * d + 1]
+                                      && p.position[d] <= upper[d] + tolerance);
+              if (below || above)
+                {
+                  std::ostringstream message;
+                  message << p.origin << ": particle " << i
+                          << " reaches outside the domain: it spans "
+                          << box.lower[d] << " to " << box.upper[d]
+                          << " m along "
+                          << "xyz"[d] << ", the mesh " << lower[d] << " to "
+                          << upper[d] << " m. Move it inside.";
+                  throw std::runtime_error(message.str());
+                }
+            }
+        }
+    }
+  } // namespace fbm
+} // namespace particulate
