@@ -1,6 +1,5 @@
 #include <particulate/core/checkpoint.h>
 #include <particulate/core/mesh.h>
-#include <particulate/core/progress_reporter.h>
 #include <particulate/core/time_series_writer.h>
 #include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/fbm/body_coupling_state.h>
@@ -14,6 +13,7 @@
 #include <particulate/fbm/rigid_body_update.h>
 #include <particulate/fluid/flow_diagnostics.h>
 #include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/run_frame.h>
 #include <particulate/geometry/half_space.h>
 #include <particulate/rigid/world.h>
 
@@ -66,24 +66,23 @@ namespace particulate {
 
 
 
-    /** Everything a run holds between its stages. */
+    /** Everything a run holds between its stages: the frame every flow
+     *  run has (rank-0 stream, timers, mesh, progress) and the coupling's
+     *  own objects. */
     template <int dim>
-    struct ParticulateFlowSimulation<dim>::Run
+    struct ParticulateFlowSimulation<dim>::Run : fluid::RunFrame<dim>
     {
-      Run(const ParticulateFlowParameters &parameters, MPI_Comm comm)
-        : pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-        , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
-        , tria(comm)
+      Run(const ParticulateFlowParameters &parameters,
+          const std::string               &parameter_file,
+          MPI_Comm                         comm)
+        : fluid::RunFrame<dim>(parameters.flow, parameter_file, comm)
         , rigid_update(parameters.particles,
                        parameters.flow.fluid.properties.density)
         , output(parameters.flow.output, comm)
         , checkpoint(parameters.flow.output.directory, comm)
       {}
 
-      ConditionalOStream                             pcout;
-      TimerOutput                                    timer;
-      parallel::fullydistributed::Triangulation<dim> tria;
-      Point<dim>                                     box_lower, box_upper;
+      Point<dim> box_lower, box_upper;
       /// 2 per mirror plane: the loads and energies of the whole set-up
       unsigned int n_images = 1;
       /// per particle: its motion where it is prescribed, else null
@@ -104,10 +103,9 @@ namespace particulate {
       /// the step
       std::optional<typename fluid::NavierStokes<dim>::BlockVector> step_start;
       /// the counts of the last solve
-      fluid::SolveStatistics                  statistics;
-      ParticulateFlowOutput<dim>              output;
-      const core::Checkpoint                  checkpoint;
-      std::unique_ptr<core::ProgressReporter> progress;
+      fluid::SolveStatistics     statistics;
+      ParticulateFlowOutput<dim> output;
+      const core::Checkpoint     checkpoint;
       /// wall seconds of the last checkpoint
       double                 last_checkpoint = 0.;
       ParticulateFlowSummary summary;
@@ -197,7 +195,7 @@ namespace particulate {
           + ": a 'particulate flow' run needs at least one particle: add a "
             "subsection 'Particle 0' (or a 'Particle file', 'Lattice' or "
             "'Random fill') to subsection 'Particles'.");
-      run_   = std::make_unique<Run>(parameters, communicator);
+      run_   = std::make_unique<Run>(parameters, parameter_file, communicator);
       Run &r = *run_;
 
       create_mesh();
@@ -238,12 +236,7 @@ namespace particulate {
                                 r.adapted_mesh != nullptr,
                                 parameters.restart,
                                 t);
-      r.progress = std::make_unique<core::ProgressReporter>(
-        r.pcout.get_stream(),
-        t,
-        time_p.scheme == core::TimeParameters::Scheme::steady ?
-          1. :
-          time_p.end_time);
+      r.start_progress(t);
       r.mesh_follows
         = r.adapted_mesh
           && (particle_p.any(ParticleMotion::free) || r.any_prescribed);
@@ -271,13 +264,7 @@ namespace particulate {
     {
       Run        &r          = *run_;
       const auto &particle_p = parameters.particles;
-      {
-        TimerOutput::Scope scope(r.timer, "mesh");
-        core::create_mesh(parameters.flow.mesh, r.tria);
-      }
-      parameters.flow.fluid.boundary_conditions.check(core::global_boundary_ids(
-                                                        r.tria),
-                                                      parameter_file);
+      r.create_mesh();
       std::tie(r.box_lower, r.box_upper)
         = core::global_bounding_box(r.tria, communicator);
       Eigen::Vector3d lower = Eigen::Vector3d::Zero(),
@@ -466,12 +453,8 @@ namespace particulate {
       for (const auto id : r.ids)
         r.interface_bodies.push_back({&r.world->body(id)});
 
-      r.pcout << "Mesh: " << r.tria.n_global_active_cells() << " cells, "
-              << r.flow->n_dofs() << " DoFs (" << r.flow->n_velocity_dofs()
-              << " velocity + " << r.flow->n_dofs() - r.flow->n_velocity_dofs()
-              << " pressure) on "
-              << Utilities::MPI::n_mpi_processes(communicator) << " rank(s); "
-              << particle_p.n_particles() << " particle(s); contact distance "
+      r.pcout << r.size_line(*r.flow) << "; " << particle_p.n_particles()
+              << " particle(s); contact distance "
               << r.world->parameters().contact_offset
               << " m\nContainment: " << r.interface->containment_method()
               << std::endl;
@@ -504,7 +487,7 @@ namespace particulate {
       // the continued run rebuilds its preconditioners here, as a
       // restarted one must: both then compute the same numbers
       r.flow->reset_preconditioners();
-      r.last_checkpoint = r.progress->elapsed_seconds();
+      r.last_checkpoint = r.elapsed_seconds();
     }
 
 
@@ -813,15 +796,12 @@ namespace particulate {
     {
       Run &r = *run_;
       record(k);
-      const auto &output_p = parameters.flow.output;
-      if ((output_p.interval > 0 && step % output_p.interval == 0)
-          || at_end_time())
+      if (r.fields_due(step, t))
         {
           TimerOutput::Scope scope(r.timer, "output");
           r.output.write_fields(*r.flow, *r.world, step, t);
         }
-      if (r.pcout.is_active())
-        r.progress->report(step, t, k, counts());
+      r.report_step(step, t, k, r.statistics, leading_speed());
     }
 
 
@@ -836,7 +816,7 @@ namespace particulate {
       // rank 0's clock decides, so that all ranks agree
       const double minutes
         = Utilities::MPI::broadcast(communicator,
-                                    run_->progress->elapsed_seconds()
+                                    run_->elapsed_seconds()
                                       - run_->last_checkpoint,
                                     0)
           / 60.;
@@ -853,27 +833,19 @@ namespace particulate {
     bool
     ParticulateFlowSimulation<dim>::at_end_time() const
     {
-      const double end = parameters.flow.time.end_time;
-      return t >= end - 1e-12 * std::max(1., end);
+      return run_->at_end_time(t);
     }
 
 
 
     template <int dim>
     std::string
-    ParticulateFlowSimulation<dim>::counts() const
+    ParticulateFlowSimulation<dim>::leading_speed() const
     {
-      const fluid::SolveStatistics &s = run_->statistics;
-      char                          buffer[160];
-      const Eigen::Vector3d        &u
+      char                   buffer[64];
+      const Eigen::Vector3d &u
         = run_->world->body(run_->ids[0]).linear_velocity;
-      std::snprintf(buffer,
-                    sizeof(buffer),
-                    "nonlinear %2u%s linear %4u  |U_0| %.5g m/s",
-                    s.nonlinear_iterations,
-                    s.used_fixed_point ? "*" : " ",
-                    s.linear_iterations,
-                    u.norm());
+      std::snprintf(buffer, sizeof(buffer), "  |U_0| %.5g m/s", u.norm());
       return std::string(buffer);
     }
 
@@ -894,8 +866,7 @@ namespace particulate {
         TimerOutput::Scope scope(r.timer, "output");
         r.output.write_fields(*r.flow, *r.world, 1, 0.);
       }
-      if (r.pcout.is_active())
-        r.progress->report(1, 1., 0., counts());
+      r.report_step(1, 1., 0., r.statistics, leading_speed());
     }
 
 
@@ -908,7 +879,6 @@ namespace particulate {
       ParticulateFlowSummary &summary = r.summary;
       summary.n_steps                 = step;
       summary.end_time                = t;
-      summary.wall_seconds            = r.progress->elapsed_seconds();
       MPI_Allreduce(MPI_IN_PLACE,
                     summary.step_seconds.data(),
                     static_cast<int>(summary.step_seconds.size()),
@@ -931,8 +901,7 @@ namespace particulate {
               << ") N\nResults are in " << r.output.directory()
               << "/ (flow.pvd, particles.pvd, particle_*.dat, flow.dat)"
               << std::endl;
-      r.timer.print_wall_time_statistics(communicator);
-      fluid::collect_run_profile(r.timer, *r.flow, communicator, summary);
+      r.finish(*r.flow, summary);
       if (flow_inspector)
         flow_inspector(*r.flow);
       return summary;

@@ -1,9 +1,9 @@
-#include <particulate/core/progress_reporter.h>
 #include <particulate/core/time_series_writer.h>
 #include <particulate/fluid/flow_diagnostics.h>
 #include <particulate/fluid/flow_output.h>
 #include <particulate/fluid/flow_simulation.h>
 #include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/run_frame.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -79,24 +79,15 @@ namespace particulate {
     FlowRunSummary
     FlowSimulation<dim>::run()
     {
-      ConditionalOStream pcout(std::cout,
-                               Utilities::MPI::this_mpi_process(communicator)
-                                 == 0);
-      TimerOutput        timer(communicator,
-                        pcout,
-                        TimerOutput::never,
-                        TimerOutput::wall_times);
-      const auto        &forces = parameters.fluid.forces;
-      const auto        &time_p = parameters.time;
+      RunFrame<dim> frame(parameters, parameter_file, communicator);
+      auto         &pcout  = frame.pcout;
+      auto         &timer  = frame.timer;
+      const auto   &tria   = frame.tria;
+      const auto   &forces = parameters.fluid.forces;
+      const auto   &time_p = parameters.time;
       const bool steady = time_p.scheme == core::TimeParameters::Scheme::steady;
 
-      parallel::fullydistributed::Triangulation<dim> tria(communicator);
-      {
-        TimerOutput::Scope scope(timer, "mesh");
-        core::create_mesh(parameters.mesh, tria);
-      }
-      const auto mesh_ids = core::global_boundary_ids(tria);
-      parameters.fluid.boundary_conditions.check(mesh_ids, parameter_file);
+      const auto mesh_ids = frame.create_mesh();
       for (const unsigned int id : forces.body_boundary_ids)
         if (std::find(mesh_ids.begin(), mesh_ids.end(), id) == mesh_ids.end())
           throw std::runtime_error(parameter_file
@@ -112,14 +103,10 @@ namespace particulate {
           point_b = to_point<dim>(forces.pressure_point_b, "Pressure point B");
         }
 
-      NavierStokes<dim> flow(parameters.fluid, tria, timer);
+      NavierStokes<dim> flow(parameters.fluid, frame.tria, timer);
       flow.setup_dofs();
       flow.set_initial_condition(0.);
-      pcout << "Mesh: " << tria.n_global_active_cells() << " cells, "
-            << flow.n_dofs() << " DoFs (" << flow.n_velocity_dofs()
-            << " velocity + " << flow.n_dofs() - flow.n_velocity_dofs()
-            << " pressure) on " << Utilities::MPI::n_mpi_processes(communicator)
-            << " rank(s)" << std::endl;
+      pcout << frame.size_line(flow) << std::endl;
 
       const auto indicator
         = forces.body_boundary_ids.empty() ?
@@ -192,19 +179,7 @@ namespace particulate {
           }
       };
 
-      core::ProgressReporter progress(pcout.get_stream(),
-                                      0.,
-                                      steady ? 1. : time_p.end_time);
-      const auto             counts = [](const SolveStatistics &s) {
-        char buffer[96];
-        std::snprintf(buffer,
-                      sizeof(buffer),
-                      "nonlinear %2u%s linear %4u",
-                      s.nonlinear_iterations,
-                      s.used_fixed_point ? "*" : " ",
-                      s.linear_iterations);
-        return std::string(buffer);
-      };
+      frame.start_progress(0.);
 
       double       t    = 0.;
       double       dt   = time_p.time_step;
@@ -220,16 +195,14 @@ namespace particulate {
           summary.linear_iterations += stats.linear_iterations;
           record(0., 0., stats);
           write_fields(0, 0.);
-          if (pcout.is_active())
-            progress.report(0, 1., 0., counts(stats));
+          frame.report_step(0, 1., 0., stats);
           step = 1;
         }
       else
         {
           record(0., dt, SolveStatistics());
           write_fields(0, 0.);
-          const double eps = 1e-12 * std::max(1., time_p.end_time);
-          while (t < time_p.end_time - eps)
+          while (!frame.at_end_time(t))
             {
               dt = std::min(dt, time_p.end_time - t);
               SolveStatistics stats;
@@ -244,20 +217,15 @@ namespace particulate {
               t += dt;
               ++step;
               record(t, dt, stats);
-              const bool last = t >= time_p.end_time - eps;
-              if ((parameters.output.interval > 0
-                   && step % parameters.output.interval == 0)
-                  || last)
+              if (frame.fields_due(step, t))
                 write_fields(step, t);
-              if (pcout.is_active())
-                progress.report(step, t, dt, counts(stats));
+              frame.report_step(step, t, dt, stats);
               if (time_p.adaptive)
                 dt = time_p.next_time_step(dt, flow.cfl_number(dt));
             }
         }
-      summary.n_steps      = step;
-      summary.end_time     = t;
-      summary.wall_seconds = progress.elapsed_seconds();
+      summary.n_steps  = step;
+      summary.end_time = t;
 
       pcout << "\nFinal: c_D = " << summary.drag_coefficient
             << "  c_L = " << summary.lift_coefficient
@@ -267,8 +235,7 @@ namespace particulate {
         pcout << "  delta_p = " << summary.pressure_difference;
       pcout << "\nResults are in " << dir << "/ (flow.pvd, flow.dat)"
             << std::endl;
-      timer.print_wall_time_statistics(communicator);
-      collect_run_profile(timer, flow, communicator, summary);
+      frame.finish(flow, summary);
       if (flow_inspector)
         flow_inspector(flow);
       return summary;

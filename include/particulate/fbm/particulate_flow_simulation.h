@@ -72,7 +72,6 @@ namespace particulate {
       std::vector<Eigen::Vector3d> position, velocity, force, torque;
       /// per particle, the largest speed reached and when [m/s, s]
       std::vector<double> max_speed, time_of_max_speed;
-      double              wall_seconds = 0.;
       /// wall seconds of each time step this run computed (its "coupled
       /// step (total)" section, the slowest rank's); benchmarks separate
       /// the first steps, which carry one-time set-ups, from the rest
@@ -250,9 +249,10 @@ namespace particulate {
        *  every 'Step interval' steps or 'Wall-time interval' minutes. */
       bool
       checkpoint_due() const;
-      /** The progress line's counts of the last solve. */
+      /** What the progress line adds to the solver's counts: the speed of
+       *  particle 0. */
       std::string
-      counts() const;
+      leading_speed() const;
       /** Time steps of a steady case: one nonlinear solve. */
       void
       solve_steady();

@@ -45,7 +45,6 @@ namespace particulate {
       double        kinetic_energy          = 0.;
       unsigned long n_dofs                  = 0;
       unsigned long n_cells                 = 0;
-      double        wall_seconds            = 0.;
     };
 
     /**

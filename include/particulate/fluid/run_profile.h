@@ -32,6 +32,8 @@ namespace particulate {
       unsigned long pressure_poisson_solves     = 0;
       unsigned long pressure_poisson_iterations = 0;
       unsigned long n_velocity_dofs             = 0;
+      /// wall seconds of the whole run (rank 0's clock)
+      double wall_seconds = 0.;
       /// the flow solver's matrices, preconditioners and vectors, all ranks
       std::size_t flow_memory_bytes = 0;
 
