@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""Plot Jeffery-orbit runs against the closed form from the small series
+that scripts/jeffery_orbit.py --series writes (time, phi, phi_jeffery).
+
+    scripts/validation/jeffery.py OUTPUT.png SERIES.dat [SERIES.dat ...]
+
+Top: the angle of the long axis against time, each run and Jeffery's
+closed form. Bottom: each run's angle minus the closed form.
+"""
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read(path):
+    with open(path) as f:
+        header = f.readline()
+    label = header.split("(", 1)[1].rsplit(")", 1)[0] if "(" in header else path
+    data = np.loadtxt(path, ndmin=2)
+    return label, data[:, 0], data[:, 1], data[:, 2]
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    runs = [read(p) for p in sys.argv[2:]]
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True,
+                                      gridspec_kw={"height_ratios": [2, 1]})
+    label, t, _, exact = runs[0]
+    top.plot(t, exact, "k-", lw=2.5, alpha=0.35, label="Jeffery (closed form)")
+    for label, t, phi, exact in runs:
+        top.plot(t, phi, lw=1, label=label)
+        bottom.plot(t, phi - exact, lw=1, label=label)
+    top.set_ylabel("angle of the long axis [rad]")
+    top.legend(loc="upper right", fontsize=8)
+    top.grid(alpha=0.3)
+    bottom.set_xlabel("time [s]")
+    bottom.set_ylabel("run - closed form [rad]")
+    bottom.axhline(0.0, color="k", lw=0.5)
+    bottom.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(sys.argv[1], dpi=110)
+    print("wrote", sys.argv[1])
+
+
+if __name__ == "__main__":
+    main()
