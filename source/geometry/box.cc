@@ -1,5 +1,6 @@
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_generators.h>
 
 #include "shape_formulas.h"
 
@@ -80,6 +81,14 @@ namespace particulate::geometry {
     for (auto &p : points)
       p = h.cwiseProduct(p);
     return points;
+  }
+
+
+
+  TriangleMesh
+  Box::surface_mesh() const
+  {
+    return mesh_generators::box(h);
   }
 
 } // namespace particulate::geometry

@@ -1,5 +1,6 @@
 #include <particulate/geometry/capsule.h>
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_generators.h>
 
 #include <algorithm>
 #include <cmath>
@@ -89,6 +90,14 @@ namespace particulate::geometry {
     points.emplace_back(0., 0., hl + r);
     points.emplace_back(0., 0., -hl - r);
     return points;
+  }
+
+
+
+  TriangleMesh
+  Capsule::surface_mesh() const
+  {
+    return mesh_generators::capsule(r, hl, 32);
   }
 
 } // namespace particulate::geometry

@@ -1,5 +1,6 @@
 #include <particulate/geometry/cylinder.h>
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_generators.h>
 
 #include <cmath>
 
@@ -85,6 +86,14 @@ namespace particulate::geometry {
   Cylinder::surface_points() const
   {
     return detail::elliptic_prism_surface_points(r, r, hh);
+  }
+
+
+
+  TriangleMesh
+  Cylinder::surface_mesh() const
+  {
+    return mesh_generators::elliptic_prism(r, r, hh, 48);
   }
 
 } // namespace particulate::geometry

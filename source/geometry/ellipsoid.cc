@@ -1,5 +1,6 @@
 #include <particulate/geometry/ellipsoid.h>
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_generators.h>
 
 #include <algorithm>
 #include <array>
@@ -211,6 +212,17 @@ namespace particulate::geometry {
     for (auto &p : points)
       p = e.cwiseProduct(p.normalized());
     return points;
+  }
+
+
+
+  TriangleMesh
+  Ellipsoid::surface_mesh() const
+  {
+    TriangleMesh mesh = mesh_generators::icosphere(1., 3);
+    for (auto &v : mesh.vertices)
+      v = v.cwiseProduct(e);
+    return mesh;
   }
 
 } // namespace particulate::geometry

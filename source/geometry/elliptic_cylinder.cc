@@ -1,5 +1,6 @@
 #include <particulate/geometry/elliptic_cylinder.h>
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_generators.h>
 
 #include <cmath>
 
@@ -120,6 +121,14 @@ namespace particulate::geometry {
   EllipticCylinder::surface_points() const
   {
     return detail::elliptic_prism_surface_points(a, b, hh);
+  }
+
+
+
+  TriangleMesh
+  EllipticCylinder::surface_mesh() const
+  {
+    return mesh_generators::elliptic_prism(a, b, hh, 48);
   }
 
 } // namespace particulate::geometry

@@ -168,4 +168,111 @@ namespace particulate::geometry::mesh_generators {
     return TriangleMesh(std::move(v), std::move(t));
   }
 
+  namespace {
+    /** Triangles that join the ring of @p n vertices starting at @p upper
+     *  to the ring below it starting at @p lower, outward for rings
+     *  ordered counter-clockwise seen from +z. */
+    void
+    join_rings(std::vector<std::array<int, 3>> &t,
+               const int                        upper,
+               const int                        lower,
+               const int                        n)
+    {
+      for (int k = 0; k < n; ++k)
+        {
+          const int k1 = (k + 1) % n;
+          t.push_back({upper + k, lower + k, lower + k1});
+          t.push_back({upper + k, lower + k1, upper + k1});
+        }
+    }
+
+    /** The fan from the apex @p apex to the ring of @p n vertices at
+     *  @p ring; @p on_top: the apex lies above the ring (+z). */
+    void
+    close_ring(std::vector<std::array<int, 3>> &t,
+               const int                        apex,
+               const int                        ring,
+               const int                        n,
+               const bool                       on_top)
+    {
+      for (int k = 0; k < n; ++k)
+        {
+          const int k1 = (k + 1) % n;
+          if (on_top)
+            t.push_back({apex, ring + k, ring + k1});
+          else
+            t.push_back({apex, ring + k1, ring + k});
+        }
+    }
+  } // namespace
+
+
+
+  TriangleMesh
+  elliptic_prism(const double       semi_axis_x,
+                 const double       semi_axis_y,
+                 const double       half_height,
+                 const unsigned int n_around)
+  {
+    if (!(semi_axis_x > 0.) || !(semi_axis_y > 0.) || !(half_height > 0.))
+      throw GeometryError(
+        "elliptic_prism: semi-axes and half height must be positive.");
+    if (n_around < 3)
+      throw GeometryError("elliptic_prism: need at least 3 segments around.");
+    const int                       n  = static_cast<int>(n_around);
+    const double                    pi = std::acos(-1.);
+    std::vector<Eigen::Vector3d>    v;
+    std::vector<std::array<int, 3>> t;
+    for (const double z : {half_height, -half_height})
+      for (int k = 0; k < n; ++k)
+        v.emplace_back(semi_axis_x * std::cos(2. * pi * k / n),
+                       semi_axis_y * std::sin(2. * pi * k / n),
+                       z);
+    v.emplace_back(0., 0., half_height);
+    v.emplace_back(0., 0., -half_height);
+    join_rings(t, 0, n, n);
+    close_ring(t, 2 * n, 0, n, true);
+    close_ring(t, 2 * n + 1, n, n, false);
+    return TriangleMesh(std::move(v), std::move(t));
+  }
+
+
+
+  TriangleMesh
+  capsule(const double       radius,
+          const double       half_length,
+          const unsigned int n_around)
+  {
+    if (!(radius > 0.) || !(half_length >= 0.))
+      throw GeometryError("capsule: need radius > 0 and half length >= 0.");
+    if (n_around < 4 || n_around % 2 != 0)
+      throw GeometryError(
+        "capsule: the number of segments around must be even and at least "
+        "4.");
+    const int                       n  = static_cast<int>(n_around);
+    const int                       m  = n / 2; // rings per hemisphere
+    const double                    pi = std::acos(-1.);
+    std::vector<Eigen::Vector3d>    v;
+    std::vector<std::array<int, 3>> t;
+    // rings j = 1 .. m of the polar angle j pi / (2 m) over each hemisphere,
+    // the northern one shifted up, the southern one down
+    for (const double side : {1., -1.})
+      for (int j = 1; j <= m; ++j)
+        {
+          const int    jj    = side > 0. ? j : m + 1 - j;
+          const double theta = 0.5 * pi * jj / m;
+          for (int k = 0; k < n; ++k)
+            v.emplace_back(radius * std::sin(theta) * std::cos(2. * pi * k / n),
+                           radius * std::sin(theta) * std::sin(2. * pi * k / n),
+                           side * (half_length + radius * std::cos(theta)));
+        }
+    v.emplace_back(0., 0., half_length + radius);
+    v.emplace_back(0., 0., -half_length - radius);
+    for (int ring = 0; ring + 1 < 2 * m; ++ring)
+      join_rings(t, ring * n, (ring + 1) * n, n);
+    close_ring(t, 2 * m * n, 0, n, true);
+    close_ring(t, 2 * m * n + 1, (2 * m - 1) * n, n, false);
+    return TriangleMesh(std::move(v), std::move(t));
+  }
+
 } // namespace particulate::geometry::mesh_generators

@@ -1,3 +1,4 @@
+#include <particulate/geometry/mesh_generators.h>
 #include <particulate/geometry/shape.h>
 
 #include <cmath>
@@ -78,6 +79,36 @@ namespace particulate::geometry {
                         + "' is not convex and bounded, so it has no support "
                           "function; the narrow phase must use its signed "
                           "distance instead.");
+  }
+
+
+
+  TriangleMesh
+  Shape::surface_mesh() const
+  {
+    if (!is_bounded())
+      return {};
+    // Start from the sphere inscribed in the bounding box about the centroid
+    // (inside the region where a distance map answers) and step each vertex
+    // along the normal by its distance until it sits on the surface.
+    const BoundingBox     box = bounding_box();
+    const Eigen::Vector3d c   = centroid();
+    const double radius    = (box.upper - c).cwiseMin(c - box.lower).minCoeff();
+    const double tolerance = 1e-12 * bounding_radius();
+    TriangleMesh mesh      = mesh_generators::icosphere(radius, 3);
+    for (auto &v : mesh.vertices)
+      {
+        v += c;
+        for (int step = 0; step < 16; ++step)
+          {
+            Eigen::Vector3d normal;
+            const double    d = signed_distance(v, &normal);
+            v -= d * normal;
+            if (std::abs(d) <= tolerance)
+              break;
+          }
+      }
+    return mesh;
   }
 
 } // namespace particulate::geometry

@@ -1,4 +1,5 @@
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_generators.h>
 #include <particulate/geometry/sphere.h>
 
 #include <cmath>
@@ -79,6 +80,14 @@ namespace particulate::geometry {
     for (auto &p : points)
       p = r * p.normalized();
     return points;
+  }
+
+
+
+  TriangleMesh
+  Sphere::surface_mesh() const
+  {
+    return mesh_generators::icosphere(r, 2);
   }
 
 } // namespace particulate::geometry

@@ -1,4 +1,5 @@
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_generators.h>
 #include <particulate/geometry/torus.h>
 
 #include <cmath>
@@ -71,6 +72,14 @@ namespace particulate::geometry {
                               r * std::sin(v));
         }
     return points;
+  }
+
+
+
+  TriangleMesh
+  Torus::surface_mesh() const
+  {
+    return mesh_generators::torus(R, r, 48, 24);
   }
 
 } // namespace particulate::geometry

@@ -317,4 +317,12 @@ namespace particulate::geometry {
     return impl->mesh;
   }
 
+
+
+  TriangleMesh
+  TriangulatedSurface::surface_mesh() const
+  {
+    return mesh();
+  }
+
 } // namespace particulate::geometry

@@ -1,4 +1,5 @@
 #include <particulate/rigid/body_state_writer.h>
+#include <particulate/rigid/body_surface_writer.h>
 #include <particulate/rigid/scene_runner.h>
 #include <particulate/rigid/vtp_writer.h>
 
@@ -14,16 +15,20 @@ namespace particulate::rigid {
     World              world   = scene.build_world();
     const unsigned int n_steps = static_cast<unsigned int>(
       std::ceil(scene.end_time / scene.time_step - 1.e-9));
-    std::unique_ptr<BodyStateWriter> dat;
-    std::unique_ptr<VtpWriter>       vtp;
+    std::unique_ptr<BodyStateWriter>   dat;
+    std::unique_ptr<VtpWriter>         vtp;
+    std::unique_ptr<BodySurfaceWriter> surfaces;
     if (scene.output_interval > 0)
       {
         std::filesystem::create_directories(scene.output_directory);
         dat = std::make_unique<BodyStateWriter>(scene.output_directory
                                                 + "/rigid");
         vtp = std::make_unique<VtpWriter>(scene.output_directory + "/bodies");
+        surfaces = std::make_unique<BodySurfaceWriter>(scene.output_directory
+                                                       + "/body_surfaces");
         dat->write(world);
         vtp->write(world);
+        surfaces->write(world);
       }
     log << "rigid bodies: " << world.n_bodies() << " bodies, " << n_steps
         << " steps of " << scene.time_step << " s, solver "
@@ -36,6 +41,7 @@ namespace particulate::rigid {
           {
             dat->write(world);
             vtp->write(world);
+            surfaces->write(world);
             const double wall = std::chrono::duration<double>(
                                   std::chrono::steady_clock::now() - t0)
                                   .count();

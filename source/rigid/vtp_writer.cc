@@ -1,14 +1,13 @@
 #include <particulate/rigid/vtp_writer.h>
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
 
 namespace particulate::rigid {
   VtpWriter::VtpWriter(std::string prefix)
-    : prefix_(std::move(prefix))
+    : series(std::move(prefix))
   {}
 
 
@@ -16,9 +15,7 @@ namespace particulate::rigid {
   std::string
   VtpWriter::write(const World &world)
   {
-    char number[16];
-    std::snprintf(number, sizeof number, "%05zu", series_.size());
-    const std::string name = prefix_ + "_" + number + ".vtp";
+    const std::string name = series.next_file("vtp");
     std::ofstream     out(name);
     if (!out)
       throw std::runtime_error("rigid::VtpWriter: cannot open '" + name
@@ -94,20 +91,7 @@ namespace particulate::rigid {
     out << "      </PointData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
     out.close();
 
-    // The series file references the pieces by their name relative to it.
-    const auto        slash = name.find_last_of('/');
-    const std::string local
-      = slash == std::string::npos ? name : name.substr(slash + 1);
-    series_.emplace_back(world.time(), local);
-    std::ofstream pvd(prefix_ + ".pvd");
-    pvd
-      << std::setprecision(12) << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <Collection>\n";
-    for (const auto &s : series_)
-      pvd << "    <DataSet timestep=\"" << s.first
-          << "\" group=\"\" part=\"0\" file=\"" << s.second << "\"/>\n";
-    pvd << "  </Collection>\n</VTKFile>\n";
+    series.add(world.time(), name);
     return name;
   }
 } // namespace particulate::rigid

@@ -68,6 +68,10 @@ namespace particulate::geometry {
     std::vector<Eigen::Vector3d>
     surface_points() const override;
 
+    /** The display triangulation: twelve triangles of the six faces. */
+    TriangleMesh
+    surface_mesh() const override;
+
   private:
     Eigen::Vector3d h;
   };

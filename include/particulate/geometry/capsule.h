@@ -88,6 +88,11 @@ namespace particulate::geometry {
     std::vector<Eigen::Vector3d>
     surface_points() const override;
 
+    /** The display triangulation: 32 segments around, 16 rings over each
+     *  hemisphere. */
+    TriangleMesh
+    surface_mesh() const override;
+
   private:
     double r;
     double hl;

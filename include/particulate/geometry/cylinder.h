@@ -82,6 +82,10 @@ namespace particulate::geometry {
     std::vector<Eigen::Vector3d>
     surface_points() const override;
 
+    /** The display triangulation: prism of 48 sides with its caps. */
+    TriangleMesh
+    surface_mesh() const override;
+
   private:
     double r;
     double hh;

@@ -76,6 +76,11 @@ namespace particulate::geometry {
     std::vector<Eigen::Vector3d>
     surface_points() const override;
 
+    /** The display triangulation: icosphere of 1280 triangles scaled by the
+     * semi-axes. */
+    TriangleMesh
+    surface_mesh() const override;
+
   private:
     Eigen::Vector3d e;
   };

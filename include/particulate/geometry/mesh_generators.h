@@ -38,6 +38,30 @@ namespace particulate::geometry {
           const unsigned int n_major,
           const unsigned int n_minor);
 
+    /**
+     * A prism along z over the ellipse of semi-axes @p semi_axis_x,
+     * @p semi_axis_y [m] (a circular cylinder when they are equal), from
+     * z = -@p half_height to @p half_height: @p n_around quadrilaterals
+     * around the side, split into triangles, and two fans for the caps.
+     */
+    TriangleMesh
+    elliptic_prism(const double       semi_axis_x,
+                   const double       semi_axis_y,
+                   const double       half_height,
+                   const unsigned int n_around);
+
+    /**
+     * A capsule along z: the segment from z = -@p half_length to
+     * @p half_length swept by a ball of radius @p radius [m]. Latitude rings
+     * of @p n_around vertices, @p n_around / 2 of them over each hemisphere
+     * (the equators doubled, joined by the cylindrical side), and fans at
+     * the poles.
+     */
+    TriangleMesh
+    capsule(const double       radius,
+            const double       half_length,
+            const unsigned int n_around);
+
   } // namespace mesh_generators
 } // namespace particulate::geometry
 

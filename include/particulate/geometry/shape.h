@@ -3,6 +3,7 @@
 
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/triangle_mesh.h>
 
 #include <Eigen/Core>
 
@@ -192,6 +193,19 @@ namespace particulate::geometry {
     {
       return {};
     }
+
+    /**
+     * A closed, outward-oriented triangulation of the surface in the body
+     * frame, fine enough to show the shape (the bodies' ParaView output),
+     * with its vertices on the surface. The default projects the
+     * triangulation of the sphere inscribed in the bounding box about the
+     * centroid onto the surface (steps along the normal by the distance),
+     * which suits shapes that are star-shaped about their centroid; the
+     * analytic shapes and surface meshes give their own. Empty for unbounded
+     * shapes.
+     */
+    virtual TriangleMesh
+    surface_mesh() const;
   };
 
 } // namespace particulate::geometry

@@ -77,6 +77,10 @@ namespace particulate::geometry {
     std::vector<Eigen::Vector3d>
     surface_points() const override;
 
+    /** The display triangulation: icosphere of 320 triangles. */
+    TriangleMesh
+    surface_mesh() const override;
+
   private:
     double r;
   };

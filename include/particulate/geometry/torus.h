@@ -51,6 +51,10 @@ namespace particulate::geometry {
     std::vector<Eigen::Vector3d>
     surface_points() const override;
 
+    /** The display triangulation: 48 x 24 quadrilaterals, split. */
+    TriangleMesh
+    surface_mesh() const override;
+
   private:
     double R;
     double r;

@@ -88,6 +88,10 @@ namespace particulate::geometry {
     std::vector<Eigen::Vector3d>
     surface_points() const override;
 
+    /** The display triangulation: the surface mesh itself. */
+    TriangleMesh
+    surface_mesh() const override;
+
     /** The surface this shape was built from. */
     const TriangleMesh &
     mesh() const;

@@ -1,6 +1,7 @@
 #ifndef particulate_rigid_vtp_writer_h
 #define particulate_rigid_vtp_writer_h
 
+#include <particulate/rigid/pvd_series.h>
 #include <particulate/rigid/world.h>
 
 #include <string>
@@ -31,19 +32,18 @@ namespace particulate::rigid {
     const std::vector<std::pair<double, std::string>> &
     written() const
     {
-      return series_;
+      return series.written();
     }
     /** Continues the series of a restarted run: the files listed in the
      * checkpoint; files written after it are left out of the next .pvd. */
     void
-    resume(std::vector<std::pair<double, std::string>> series)
+    resume(std::vector<std::pair<double, std::string>> written)
     {
-      series_ = std::move(series);
+      series.resume(std::move(written));
     }
 
   private:
-    std::string                                 prefix_;
-    std::vector<std::pair<double, std::string>> series_;
+    PvdSeries series;
   };
 } // namespace particulate::rigid
 

@@ -1,0 +1,126 @@
+// The bodies' surfaces in ParaView (BodySurfaceWriter): a rotated, spinning
+// box, a sphere and a capsule above a floor (a half-space, which has no
+// surface to draw). The written file must hold each bounded body's display
+// triangulation, in body order: as many points and triangles as the meshes,
+// every point on its body's surface at the body's pose (|signed distance| <
+// 1e-8 m, the file's ten digits), the point velocity the rigid motion's
+// v + omega x (x - X) (to 1e-8 m/s), the cell ids the body ids; and the
+// series file one data set per call.
+#include <particulate/geometry/box.h>
+#include <particulate/geometry/capsule.h>
+#include <particulate/geometry/half_space.h>
+#include <particulate/geometry/sphere.h>
+#include <particulate/rigid/body_surface_writer.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "test_tools.h"
+
+using namespace particulate;
+using Eigen::Vector3d;
+
+namespace {
+  /** The numbers of the @p index-th DataArray of the file @p text. */
+  std::vector<double>
+  data_array(const std::string &text, const unsigned int index)
+  {
+    std::size_t at = 0;
+    for (unsigned int i = 0; i <= index; ++i)
+      at = text.find("<DataArray", at) + 1;
+    const std::size_t   begin = text.find('>', at) + 1;
+    const std::size_t   end   = text.find("</DataArray>", begin);
+    std::istringstream  in(text.substr(begin, end - begin));
+    std::vector<double> values;
+    for (double v; in >> v;)
+      values.push_back(v);
+    return values;
+  }
+} // namespace
+
+int
+main()
+{
+  rigid::World       world;
+  const unsigned int steel = world.add_material(rigid::Material());
+  world.add_body(std::make_shared<geometry::HalfSpace>(Vector3d(0., 0., 1.),
+                                                       0.),
+                 steel,
+                 Vector3d::Zero(),
+                 Eigen::Quaterniond::Identity(),
+                 true);
+  const Eigen::Quaterniond turned(
+    Eigen::AngleAxisd(0.7, Vector3d(1., 2., 3.).normalized()));
+  const rigid::BodyId box
+    = world.add_body(std::make_shared<geometry::Box>(Vector3d(0.3, 0.2, 0.1)),
+                     steel,
+                     Vector3d(1., 0., 1.),
+                     turned);
+  world.body(box).linear_velocity  = Vector3d(0.5, -1., 2.);
+  world.body(box).angular_velocity = Vector3d(3., 1., -2.);
+  world.add_body(std::make_shared<geometry::Sphere>(0.25),
+                 steel,
+                 Vector3d(-1., 0.5, 0.6));
+  world.add_body(std::make_shared<geometry::Capsule>(0.1, 0.3),
+                 steel,
+                 Vector3d(0., -1., 0.8),
+                 turned.inverse());
+
+  std::filesystem::create_directories("body_surface_files");
+  rigid::BodySurfaceWriter writer("body_surface_files/surfaces");
+  writer.write(world);
+  const std::string name = writer.write(world);
+  CHECK(name == "body_surface_files/surfaces_00001.vtp", name);
+
+  std::ifstream     in(name);
+  const std::string text((std::istreambuf_iterator<char>(in)),
+                         std::istreambuf_iterator<char>());
+  // arrays: points, connectivity, offsets, velocity, id, fixed
+  const std::vector<double> points   = data_array(text, 0),
+                            offsets  = data_array(text, 2),
+                            velocity = data_array(text, 3),
+                            ids      = data_array(text, 4);
+  std::size_t first_point = 0, first_cell = 0;
+  for (rigid::BodyId b = 1; b < world.n_bodies(); ++b)
+    {
+      const rigid::RigidBody      &body = world.body(b);
+      const geometry::TriangleMesh mesh = body.shape().surface_mesh();
+      for (std::size_t k = 0; k < mesh.n_vertices(); ++k)
+        {
+          const std::size_t p = 3 * (first_point + k);
+          CHECK(p + 2 < points.size(), "too few points for body " << b);
+          const Vector3d x(points[p], points[p + 1], points[p + 2]);
+          const Vector3d v(velocity[p], velocity[p + 1], velocity[p + 2]);
+          CHECK(std::abs(body.signed_distance(x)) < 1e-8,
+                "body " << b << " point " << k << " off the surface by "
+                        << body.signed_distance(x));
+          const Vector3d rigid_velocity
+            = body.linear_velocity
+              + body.angular_velocity.cross(x - body.position);
+          CHECK((v - rigid_velocity).norm() < 1e-8,
+                "body " << b << " point " << k << " velocity "
+                        << v.transpose());
+        }
+      for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
+        CHECK(ids[first_cell + t] == b, "triangle of body " << b);
+      first_point += mesh.n_vertices();
+      first_cell += mesh.n_triangles();
+    }
+  CHECK(points.size() == 3 * first_point,
+        points.size() / 3 << " points, expected " << first_point);
+  CHECK(offsets.size() == first_cell && ids.size() == first_cell,
+        offsets.size() << " triangles, expected " << first_cell);
+
+  std::ifstream     pvd("body_surface_files/surfaces.pvd");
+  const std::string series((std::istreambuf_iterator<char>(pvd)),
+                           std::istreambuf_iterator<char>());
+  CHECK(series.find("surfaces_00000.vtp") != std::string::npos
+          && series.find("surfaces_00001.vtp") != std::string::npos,
+        series);
+  std::cout << first_point << " points, " << first_cell
+            << " triangles of 3 bodies: OK\n";
+  return 0;
+}
