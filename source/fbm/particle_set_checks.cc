@@ -4,6 +4,7 @@
 #include <particulate/rigid/rigid_body.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -21,19 +22,43 @@ namespace particulate {
         return body;
       }
 
+      /** The smallest gap between @p a and @p b up to @p margin [m]
+       *  (negative: they overlap; infinite: farther apart than
+       *  @p margin). */
+      double
+      smallest_gap(const rigid::RigidBody &a,
+                   const rigid::RigidBody &b,
+                   const double            margin)
+      {
+        rigid::ContactEdge edge;
+        edge.manifold.a = 0;
+        edge.manifold.b = 1;
+        rigid::NarrowPhase::collide(a, b, margin, edge);
+        double gap = std::numeric_limits<double>::infinity();
+        for (const auto &c : edge.manifold.points)
+          gap = std::min(gap, c.distance);
+        return gap;
+      }
+
+      /** The face of the box (x-, x+, y-, ...) that the wall @p body, a
+       *  half-space whose outward normal points into the fluid, lies on. */
+      std::string
+      wall_face(const rigid::RigidBody &body)
+      {
+        Eigen::Vector3d n;
+        body.shape().signed_distance(body.to_body(Eigen::Vector3d::Zero()), &n);
+        n = body.rotation() * n;
+        Eigen::Index axis;
+        n.cwiseAbs().maxCoeff(&axis);
+        return std::string(1, "xyz"[axis]) + (n[axis] > 0. ? "-" : "+");
+      }
+
       /** The deepest penetration of two placed particles [m] (0 if they
        *  are apart or touch). */
       double
       penetration(const ParticleDescription &a, const ParticleDescription &b)
       {
-        rigid::ContactEdge edge;
-        edge.manifold.a = 0;
-        edge.manifold.b = 1;
-        rigid::NarrowPhase::collide(placed_body(a), placed_body(b), 0., edge);
-        double depth = 0.;
-        for (const auto &c : edge.manifold.points)
-          depth = std::max(depth, -c.distance);
-        return depth;
+        return std::max(0., -smallest_gap(placed_body(a), placed_body(b), 0.));
       }
     } // namespace
 
@@ -122,6 +147,52 @@ namespace particulate {
                 }
             }
         }
+    }
+
+
+
+    void
+    check_contact_clearance(const rigid::World               &world,
+                            const std::vector<rigid::BodyId> &particle_ids,
+                            const std::vector<ParticleDescription> &particles,
+                            const double                            clearance)
+    {
+      std::vector<int> particle_of(world.n_bodies(), -1);
+      for (unsigned int i = 0; i < particle_ids.size(); ++i)
+        particle_of[particle_ids[i]] = static_cast<int>(i);
+      const auto describe = [&](const rigid::BodyId id) {
+        return particle_of[id] >= 0 ?
+                 "particle " + std::to_string(particle_of[id]) + " ("
+                   + particles[particle_of[id]].origin + ")" :
+                 "the domain wall " + wall_face(world.body(id));
+      };
+      for (rigid::BodyId a = 0; a < world.n_bodies(); ++a)
+        for (rigid::BodyId b = a + 1; b < world.n_bodies(); ++b)
+          {
+            const rigid::RigidBody &A = world.body(a), &B = world.body(b);
+            if (A.is_fixed() && B.is_fixed())
+              continue;
+            if (A.shape().is_bounded() && B.shape().is_bounded()
+                && (A.position - B.position).norm()
+                     >= A.bounding_radius() + B.bounding_radius() + clearance)
+              continue;
+            const bool   a_first = A.shape().kind() <= B.shape().kind();
+            const double gap     = a_first ? smallest_gap(A, B, clearance) :
+                                             smallest_gap(B, A, clearance);
+            if (gap < clearance * (1. - 1e-6))
+              {
+                std::ostringstream message;
+                message << describe(a) << " and " << describe(b) << " start "
+                        << gap << " m apart, closer than the contact distance "
+                        << clearance
+                        << " m that the rigid engine keeps between surfaces: "
+                           "it would push them apart in the first step. "
+                           "Space them at least that far apart, or set a "
+                           "smaller 'Contact distance' in subsection "
+                           "'Particles' (a finer mesh lowers 'auto').";
+                throw std::runtime_error(message.str());
+              }
+          }
     }
   } // namespace fbm
 } // namespace particulate

@@ -4,6 +4,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <array>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
 
 namespace particulate {
   namespace fbm {
@@ -15,6 +18,7 @@ namespace particulate {
       , communicator(comm)
       , flow_output(parameters.directory, "flow")
       , body_output(parameters.directory + "/particles")
+      , surface_output(parameters.directory + "/particle_surfaces")
     {}
 
 
@@ -94,7 +98,8 @@ namespace particulate {
                                  "particle_kinetic_energy",
                                  "nonlinear_iterations",
                                  "linear_iterations",
-                                 "time_step"},
+                                 "time_step",
+                                 "max_penetration"},
                                 restart,
                                 time);
     }
@@ -160,14 +165,44 @@ namespace particulate {
       const double                  fluid_kinetic_energy,
       const double                  particle_kinetic_energy,
       const fluid::SolveStatistics &statistics,
-      const double                  time_step)
+      const double                  time_step,
+      const double                  max_penetration)
     {
       flow_series->write_row({time,
                               fluid_kinetic_energy,
                               particle_kinetic_energy,
                               double(statistics.nonlinear_iterations),
                               double(statistics.linear_iterations),
-                              time_step});
+                              time_step,
+                              max_penetration});
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::write_particle_table(
+      const std::vector<ParticleDescription> &particles)
+    {
+      if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      const std::string name = parameters.directory + "/particle_set.csv";
+      std::ofstream     out(name);
+      out << "id,shape,motion,density,volume,mass,x,y,z\n"
+          << std::setprecision(12);
+      const char *const motions[] = {"free", "fixed", "prescribed"};
+      for (unsigned int i = 0; i < particles.size(); ++i)
+        {
+          const ParticleDescription &p      = particles[i];
+          const double               volume = p.shape->volume();
+          out << i << ',' << p.shape_name << ','
+              << motions[static_cast<int>(p.motion)] << ',' << p.density << ','
+              << volume << ',' << p.density * volume << ',' << p.position[0]
+              << ',' << p.position[1] << ',' << p.position[2] << '\n';
+        }
+      if (!out)
+        throw std::runtime_error("cannot write '" + name
+                                 + "'; is the output folder writable?");
     }
 
 
@@ -184,7 +219,10 @@ namespace particulate {
         return;
       flow_output.write(flow, step, time);
       if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
-        body_output.write(world);
+        {
+          body_output.write(world);
+          surface_output.write(world);
+        }
     }
 
 
@@ -195,6 +233,7 @@ namespace particulate {
     {
       core::write_binary_series(out, flow_output.written());
       core::write_binary_series(out, body_output.written());
+      core::write_binary_series(out, surface_output.written());
     }
 
 
@@ -205,6 +244,7 @@ namespace particulate {
     {
       flow_output.resume(core::read_binary_series(in));
       body_output.resume(core::read_binary_series(in));
+      surface_output.resume(core::read_binary_series(in));
     }
 
     template class ParticulateFlowOutput<2>;

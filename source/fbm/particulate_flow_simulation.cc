@@ -223,6 +223,11 @@ namespace particulate {
       r.flow->setup_dofs();
       r.flow->set_initial_condition(0.);
       add_bodies();
+      if (!parameters.restart)
+        check_contact_clearance(*r.world,
+                                r.ids,
+                                particle_p.bodies,
+                                r.world->parameters().contact_offset);
       set_up_interface();
 
       r.states.assign(r.ids.size(), BodyCouplingState());
@@ -236,6 +241,7 @@ namespace particulate {
                                 r.adapted_mesh != nullptr,
                                 parameters.restart,
                                 t);
+      r.output.write_particle_table(particle_p.bodies);
       r.start_progress(t);
       r.mesh_follows
         = r.adapted_mesh
@@ -570,7 +576,8 @@ namespace particulate {
                            r.n_images * fluid::kinetic_energy(*r.flow),
                            particles_energy,
                            r.statistics,
-                           k);
+                           k,
+                           r.world->max_penetration());
     }
 
 
@@ -617,13 +624,17 @@ namespace particulate {
       Run               &r          = *run_;
       const auto        &particle_p = parameters.particles;
       TimerOutput::Scope scope(r.timer, "fbm: containment and constraints");
-      std::vector<std::tuple<Eigen::Vector3d, Eigen::Vector3d, Eigen::Vector3d>>
+      std::vector<std::tuple<Eigen::Vector3d,
+                             Eigen::Quaterniond,
+                             Eigen::Vector3d,
+                             Eigen::Vector3d>>
         current;
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         {
           rigid::RigidBody        &b = r.world->body(r.ids[i]);
           const BodyCouplingState &s = r.states[i];
           current.emplace_back(b.position,
+                               b.orientation,
                                b.linear_velocity,
                                b.angular_velocity);
           // only free bodies are predicted; the others are where and how
@@ -631,8 +642,21 @@ namespace particulate {
           if (particle_p.bodies[i].motion != ParticleMotion::free)
             continue;
           if (particle_p.midpoint_interface_position)
-            b.position
-              += 0.5 * k * (b.linear_velocity + 0.5 * k * s.acceleration);
+            {
+              // halfway to the pose predicted for t_n+1 with the last
+              // step's accelerations: moved and turned
+              b.position
+                += 0.5 * k * (b.linear_velocity + 0.5 * k * s.acceleration);
+              const Eigen::Vector3d turn
+                = 0.5 * k
+                  * (b.angular_velocity + 0.5 * k * s.angular_acceleration);
+              if (turn.squaredNorm() > 0.)
+                b.orientation
+                  = (Eigen::Quaterniond(
+                       Eigen::AngleAxisd(turn.norm(), turn.normalized()))
+                     * b.orientation)
+                      .normalized();
+            }
           if (particle_p.extrapolate_constraint_velocity)
             {
               b.linear_velocity += k * s.acceleration;
@@ -647,7 +671,10 @@ namespace particulate {
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         {
           rigid::RigidBody &b = r.world->body(r.ids[i]);
-          std::tie(b.position, b.linear_velocity, b.angular_velocity)
+          std::tie(b.position,
+                   b.orientation,
+                   b.linear_velocity,
+                   b.angular_velocity)
             = current[i];
         }
       r.flow->set_fictitious_boundary_values(std::move(values));

@@ -183,7 +183,8 @@ main(int argc, char **argv)
                 << b.velocity[0].transpose() << what << "\n";
       checker.check(a.max_speed[0] == b.max_speed[0],
                     "largest speed carried across the restart" + what);
-      series.insert(series.end(), {"/flow.pvd", "/particles.pvd"});
+      series.insert(series.end(),
+                    {"/flow.pvd", "/particles.pvd", "/particle_surfaces.pvd"});
       for (const std::string &file : series)
         {
           const std::string sa = contents(dir_a + file),

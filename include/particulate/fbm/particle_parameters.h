@@ -38,7 +38,7 @@ namespace particulate {
       /// velocity predicted for the end of the step, U_n + dt a_n
       bool extrapolate_constraint_velocity = false;
       /// 'Interface position = midpoint': the covered nodes of a step are
-      /// those of the particle moved to the middle of the step
+      /// those of the particle moved and turned to the middle of the step
       bool midpoint_interface_position = false;
       /// 'Force integral = stress and inertia': the loads include the
       /// momentum of the fluid in the cut cells (fluid_inertia_loads)

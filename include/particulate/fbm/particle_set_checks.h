@@ -2,6 +2,7 @@
 #define particulate_fbm_particle_set_checks_h
 
 #include <particulate/fbm/particle_description.h>
+#include <particulate/rigid/world.h>
 
 #include <Eigen/Core>
 
@@ -36,6 +37,23 @@ namespace particulate {
                      const Eigen::Vector3d                  &upper,
                      const std::array<bool, 6>              &mirror_planes,
                      const unsigned int                      dim);
+
+    /**
+     * Refuse a free particle that starts closer than @p clearance (the
+     * rigid engine's contact distance) to another particle or to a domain
+     * wall: the contact model holds surfaces that far apart, so it would
+     * push them apart in the first step, at speeds of the order of the
+     * shortfall over the time step that the case never asked for. The
+     * bodies of @p world that are not in @p particle_ids are its walls;
+     * pairs of which neither is free are not checked.
+     * @throw std::runtime_error naming the bodies, where each particle was
+     *   described, the gap and the contact distance
+     */
+    void
+    check_contact_clearance(const rigid::World               &world,
+                            const std::vector<rigid::BodyId> &particle_ids,
+                            const std::vector<ParticleDescription> &particles,
+                            const double                            clearance);
   } // namespace fbm
 } // namespace particulate
 

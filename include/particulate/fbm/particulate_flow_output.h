@@ -5,8 +5,10 @@
 #include <particulate/core/time_series_writer.h>
 #include <particulate/deformation/moving_mesh.h>
 #include <particulate/fbm/hydrodynamic_load.h>
+#include <particulate/fbm/particle_description.h>
 #include <particulate/fluid/flow_output.h>
 #include <particulate/fluid/navier_stokes.h>
+#include <particulate/rigid/body_surface_writer.h>
 #include <particulate/rigid/vtp_writer.h>
 #include <particulate/rigid/world.h>
 
@@ -33,10 +35,12 @@ namespace particulate {
     /**
      * What a particulate-flow run writes into its output folder: the time
      * series `particle_<i>.dat` (one per body: pose, velocities, loads,
-     * contact force, kinetic energy, covered nodes), `flow.dat` (kinetic
-     * energies, iteration counts, time step) and, on an adapted mesh,
-     * `mesh.dat` (its quality); and the ParaView series `flow.pvd` and
-     * `particles.pvd`.
+     * contact force, kinetic energy, covered nodes), `particle_set.csv`
+     * (what each particle is), `flow.dat` (kinetic
+     * energies, iteration counts, time step, deepest contact overlap) and, on
+     * an adapted mesh, `mesh.dat` (its quality); and the ParaView series
+     * `flow.pvd`, `particles.pvd` (a point per body with its state, for glyphs)
+     * and `particle_surfaces.pvd` (the bodies' surfaces, any shape).
      *
      * A restart continues every series: the ParaView files listed in the
      * checkpoint (save(), load()), and the `.dat` files without the rows
@@ -61,6 +65,15 @@ namespace particulate {
                        const bool         restart,
                        const double       time);
 
+      /**
+       * The table `particle_set.csv` of the particles as the case file
+       * made them (lattices and random fills expanded): per particle its
+       * number (the i of `particle_<i>.dat`), shape name, motion, density,
+       * volume and mass (per unit depth in 2D), and initial centre.
+       */
+      void
+      write_particle_table(const std::vector<ParticleDescription> &particles);
+
       /** A row of `mesh.dat` (nothing without an adapted mesh). */
       void
       record_mesh(const double                          time,
@@ -70,13 +83,16 @@ namespace particulate {
       void
       record_bodies(const double time, const std::vector<BodyRecord> &bodies);
 
-      /** A row of `flow.dat`. */
+      /** A row of `flow.dat`; @p max_penetration: the rigid world's
+       *  deepest contact overlap of the shapes inflated by the contact
+       *  distance [m] (0 apart). */
       void
       record_flow(const double                  time,
                   const double                  fluid_kinetic_energy,
                   const double                  particle_kinetic_energy,
                   const fluid::SolveStatistics &statistics,
-                  const double                  time_step);
+                  const double                  time_step,
+                  const double                  max_penetration);
 
       /** The fields at @p step, @p time, if the case writes them. */
       void
@@ -112,6 +128,7 @@ namespace particulate {
       MPI_Comm                                             communicator;
       fluid::FlowOutput<dim>                               flow_output;
       rigid::VtpWriter                                     body_output;
+      rigid::BodySurfaceWriter                             surface_output;
       std::vector<std::unique_ptr<core::TimeSeriesWriter>> body_series;
       std::unique_ptr<core::TimeSeriesWriter>              mesh_series;
       std::unique_ptr<core::TimeSeriesWriter>              flow_series;

@@ -232,7 +232,8 @@ namespace particulate {
       /** The interface a free body shows the fluid over a step of size
        *  @p k: 'Constraint velocity = extrapolated' gives the covered nodes
        *  U_n + k a_n, 'Interface position = midpoint' marks them around
-       *  X_n + k/2 (U_n + k/2 a_n); the bodies keep their state. */
+       *  X_n + k/2 (U_n + k/2 a_n), the body turned by
+       *  k/2 (omega_n + k/2 alpha_n); the bodies keep their state. */
       void
       impose_predicted_interface(const double k);
       /** The imposed velocities are the bodies' current ones. */

@@ -1,5 +1,6 @@
-# Run `particulate --validate FILE` and require a non-zero exit code and the
-# message given on the file's first line after "# expect: " (a regular
+# Run `particulate --validate FILE` (with -DRUN=1: `particulate FILE`, for
+# what only the run's set-up can see) and require a non-zero exit code and
+# the message given on the file's first line after "# expect: " (a regular
 # expression), or given as -DEXPECT=... Called by CTest with -DEXE=...
 # -DFILE=...
 if(DEFINED EXPECT)
@@ -8,7 +9,12 @@ else()
   file(STRINGS "${FILE}" first_line LIMIT_COUNT 1)
   string(REGEX REPLACE "^# expect: " "" expected "${first_line}")
 endif()
-execute_process(COMMAND "${EXE}" --validate "${FILE}"
+if(DEFINED RUN)
+  set(mode "")
+else()
+  set(mode --validate)
+endif()
+execute_process(COMMAND "${EXE}" ${mode} "${FILE}"
   RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
 string(REPLACE "\n" " " flat "${all}")

@@ -1,0 +1,31 @@
+"""Readers of what a Particulate run writes into its output folder, for the
+scripts next to this file."""
+import os
+
+import numpy as np
+
+
+def read_series(path):
+    """A `.dat` time series (a '# name ...' header line, then rows of
+    numbers) as {column name: array}."""
+    with open(path) as f:
+        header = f.readline().lstrip("#").split()
+    data = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: data[:, i] for i, name in enumerate(header)}
+
+
+def read_parameters(folder):
+    """The entries of <folder>/used_parameters.prm as
+    {"Subsection/.../Entry": value text}."""
+    values, sections = {}, []
+    with open(os.path.join(folder, "used_parameters.prm")) as f:
+        for line in f:
+            words = line.split("#")[0].strip()
+            if words.startswith("subsection "):
+                sections.append(words[len("subsection "):].strip())
+            elif words == "end":
+                sections.pop()
+            elif words.startswith("set "):
+                name, _, value = words[4:].partition("=")
+                values["/".join(sections + [name.strip()])] = value.strip()
+    return values

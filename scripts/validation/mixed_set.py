@@ -1,0 +1,53 @@
+#!/usr/bin/env python3
+"""Plot a settling run of many bodies from the small series that
+scripts/mixed_set.py --series writes (time, total kinetic energy, height of
+every body; the header names the bodies' shapes).
+
+    scripts/validation/mixed_set.py OUTPUT.png SERIES.dat
+
+Top: the height of every body against time, one colour per shape. Bottom:
+the bodies' total kinetic energy (logarithmic).
+"""
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read(path):
+    with open(path) as f:
+        header = f.readline()
+    shapes = header.rsplit("shapes:", 1)[1].rsplit(")", 1)[0].split()
+    data = np.loadtxt(path, ndmin=2)
+    return shapes, data[:, 0], data[:, 1], data[:, 2:]
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    shapes, t, energy, heights = read(sys.argv[2])
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True,
+                                      gridspec_kw={"height_ratios": [2, 1]})
+    colours = {}
+    for i, shape in enumerate(shapes):
+        first = shape not in colours
+        colours.setdefault(shape, "C%d" % len(colours))
+        top.plot(t, 1e3 * heights[:, i], color=colours[shape], lw=1,
+                 label=shape if first else None)
+    top.set_ylabel("height of the centre [mm]")
+    top.legend(loc="upper right", fontsize=8)
+    top.grid(alpha=0.3)
+    bottom.semilogy(t, np.maximum(energy, 1e-300), "k-", lw=1)
+    bottom.set_xlabel("time [s]")
+    bottom.set_ylabel("kinetic energy [J]")
+    bottom.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(sys.argv[1], dpi=110)
+    print("wrote", sys.argv[1])
+
+
+if __name__ == "__main__":
+    main()
