@@ -40,7 +40,8 @@ def main():
     top.set_ylabel("height of the centre [mm]")
     top.legend(loc="upper right", fontsize=8)
     top.grid(alpha=0.3)
-    bottom.semilogy(t, np.maximum(energy, 1e-300), "k-", lw=1)
+    moving = energy > 0.
+    bottom.semilogy(t[moving], energy[moving], "k-", lw=1)
     bottom.set_xlabel("time [s]")
     bottom.set_ylabel("kinetic energy [J]")
     bottom.grid(alpha=0.3)
