@@ -13,6 +13,7 @@
 #include <particulate/fbm/particulate_flow_simulation.h>
 
 #include "../fluid/test_utilities.h"
+#include "run_case.h"
 
 using namespace particulate;
 
@@ -20,7 +21,7 @@ namespace {
   fbm::ParticulateFlowSummary
   run(MPI_Comm comm, const std::string &output)
   {
-    auto parameters = fbm::read_particulate_flow_case(
+    const auto parameters = fbm::read_particulate_flow_case(
       testing::source_path("prm/mixed-set/mixed-set.prm"),
       "subsection Time\n set End time = 0.03\nend\n"
       "subsection Particles\n"
@@ -32,15 +33,10 @@ namespace {
       "subsection Nonlinear solver\n set Absolute tolerance = 1e-14\n"
       " set Relative tolerance = 1e-10\nend\n"
       "subsection Linear solver\n set Relative tolerance = 1e-10\nend\n");
-    parameters.flow.output.directory = output;
-    parameters.flow.output.write_vtu = false;
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      std::filesystem::create_directories(output);
-    MPI_Barrier(comm);
-    fbm::ParticulateFlowSimulation<3> simulation(parameters,
-                                                 "mixed-set.prm",
-                                                 comm);
-    return simulation.run();
+    return testing::run_without_fields<3>(parameters,
+                                          "mixed-set.prm",
+                                          output,
+                                          comm);
   }
 
   /** max_i |a_i - b_i| / max_i |b_i|. */

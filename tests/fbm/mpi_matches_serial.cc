@@ -13,6 +13,7 @@
 #include <particulate/fbm/particulate_flow_simulation.h>
 
 #include "../fluid/test_utilities.h"
+#include "run_case.h"
 
 using namespace particulate;
 
@@ -20,7 +21,7 @@ namespace {
   fbm::ParticulateFlowSummary
   run(MPI_Comm comm, const std::string &marking, const std::string &output)
   {
-    auto parameters = fbm::read_particulate_flow_case(
+    const auto parameters = fbm::read_particulate_flow_case(
       testing::source_path("prm/settling-disk/settling-disk.prm"),
       "subsection Mesh\n set Refinements = 4\nend\n"
       "subsection Time\n set End time = 0.015\nend\n"
@@ -33,15 +34,10 @@ namespace {
           " set Relative tolerance = 1e-10\nend\n"
           "subsection Linear solver\n set Relative tolerance = 1e-8\n"
           " set Pressure Poisson tolerance = 1e-8\nend\n");
-    parameters.flow.output.directory = output;
-    parameters.flow.output.write_vtu = false;
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      std::filesystem::create_directories(output);
-    MPI_Barrier(comm);
-    fbm::ParticulateFlowSimulation<2> simulation(parameters,
-                                                 "settling-disk.prm",
-                                                 comm);
-    return simulation.run();
+    return testing::run_without_fields<2>(parameters,
+                                          "settling-disk.prm",
+                                          output,
+                                          comm);
   }
 } // namespace
 
