@@ -53,6 +53,43 @@ namespace particulate {
         return std::string(1, "xyz"[axis]) + (n[axis] > 0. ? "-" : "+");
       }
 
+      /**
+       * Calls @p visit(i, j) once for every pair i != j of balls (centres
+       * @p centres, radii @p radii) that come closer than @p reach: a sweep
+       * along x over the balls sorted by their lowest x, so the cost grows
+       * with the number of balls and of pairs that overlap in x, not with
+       * their square. A 2D set (@p dim = 2) ignores z.
+       */
+      template <typename Visit>
+      void
+      for_each_close_pair(const std::vector<Eigen::Vector3d> &centres,
+                          const std::vector<double>          &radii,
+                          const double                        reach,
+                          const unsigned int                  dim,
+                          const Visit                        &visit)
+      {
+        const unsigned int        n = centres.size();
+        std::vector<unsigned int> order(n);
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](unsigned int i, unsigned int j) {
+                    return centres[i][0] - radii[i] < centres[j][0] - radii[j];
+                  });
+        for (unsigned int s = 0; s < n; ++s)
+          for (unsigned int t = s + 1; t < n; ++t)
+            {
+              const unsigned int i = order[s], j = order[t];
+              if (centres[j][0] - radii[j] >= centres[i][0] + radii[i] + reach)
+                break;
+              Eigen::Vector3d d = centres[j] - centres[i];
+              if (dim == 2)
+                d[2] = 0.;
+              if (d.norm() < radii[i] + radii[j] + reach)
+                visit(i, j);
+            }
+      }
+
       /** The deepest penetration of two placed particles [m] (0 if they
        *  are apart or touch). */
       double
@@ -68,46 +105,35 @@ namespace particulate {
     check_no_overlap(const std::vector<ParticleDescription> &particles,
                      const unsigned int                      dim)
     {
-      // sweep along x over the bounding balls, then the exact test
-      const unsigned int  n = particles.size();
-      std::vector<double> radius(n);
-      for (unsigned int i = 0; i < n; ++i)
-        radius[i] = particles[i].shape->bounding_radius();
-      std::vector<unsigned int> order(n);
-      std::iota(order.begin(), order.end(), 0u);
-      std::sort(order.begin(),
-                order.end(),
-                [&](unsigned int i, unsigned int j) {
-                  return particles[i].position[0] - radius[i]
-                         < particles[j].position[0] - radius[j];
-                });
-      for (unsigned int s = 0; s < n; ++s)
-        for (unsigned int t = s + 1; t < n; ++t)
-          {
-            const unsigned int i = order[s], j = order[t];
-            if (particles[j].position[0] - radius[j]
-                > particles[i].position[0] + radius[i])
-              break;
-            Eigen::Vector3d d = particles[j].position - particles[i].position;
-            if (dim == 2)
-              d[2] = 0.;
-            if (d.norm() >= radius[i] + radius[j])
-              continue;
-            const double depth = penetration(particles[i], particles[j]);
-            const double size  = std::min(particles[i].shape->bounding_radius(),
-                                         particles[j].shape->bounding_radius());
-            if (depth > 1e-9 * size)
-              {
-                std::ostringstream message;
-                message << "particles " << std::min(i, j) << " and "
-                        << std::max(i, j) << " overlap by " << depth
-                        << " m at the start:\n  "
-                        << particles[std::min(i, j)].origin << "\n  "
-                        << particles[std::max(i, j)].origin
-                        << "\nMove them apart (they may touch).";
-                throw std::runtime_error(message.str());
-              }
-          }
+      // the bounding balls first, then the exact test
+      std::vector<Eigen::Vector3d> centres;
+      std::vector<double>          radii;
+      for (const ParticleDescription &p : particles)
+        {
+          centres.push_back(p.position);
+          radii.push_back(p.shape->bounding_radius());
+        }
+      for_each_close_pair(centres,
+                          radii,
+                          0.,
+                          dim,
+                          [&](unsigned int i, unsigned int j) {
+                            const double depth
+                              = penetration(particles[i], particles[j]);
+                            const double size = std::min(radii[i], radii[j]);
+                            if (depth > 1e-9 * size)
+                              {
+                                std::ostringstream message;
+                                message
+                                  << "particles " << std::min(i, j) << " and "
+                                  << std::max(i, j) << " overlap by " << depth
+                                  << " m at the start:\n  "
+                                  << particles[std::min(i, j)].origin << "\n  "
+                                  << particles[std::max(i, j)].origin
+                                  << "\nMove them apart (they may touch).";
+                                throw std::runtime_error(message.str());
+                              }
+                          });
     }
 
 
@@ -166,33 +192,52 @@ namespace particulate {
                    + particles[particle_of[id]].origin + ")" :
                  "the domain wall " + wall_face(world.body(id));
       };
-      for (rigid::BodyId a = 0; a < world.n_bodies(); ++a)
-        for (rigid::BodyId b = a + 1; b < world.n_bodies(); ++b)
+      const auto check = [&](const rigid::BodyId a, const rigid::BodyId b) {
+        const rigid::RigidBody &A = world.body(a), &B = world.body(b);
+        if (A.is_fixed() && B.is_fixed())
+          return;
+        const bool   a_first = A.shape().kind() <= B.shape().kind();
+        const double gap     = a_first ? smallest_gap(A, B, clearance) :
+                                         smallest_gap(B, A, clearance);
+        if (gap < clearance * (1. - 1e-6))
           {
-            const rigid::RigidBody &A = world.body(a), &B = world.body(b);
-            if (A.is_fixed() && B.is_fixed())
-              continue;
-            if (A.shape().is_bounded() && B.shape().is_bounded()
-                && (A.position - B.position).norm()
-                     >= A.bounding_radius() + B.bounding_radius() + clearance)
-              continue;
-            const bool   a_first = A.shape().kind() <= B.shape().kind();
-            const double gap     = a_first ? smallest_gap(A, B, clearance) :
-                                             smallest_gap(B, A, clearance);
-            if (gap < clearance * (1. - 1e-6))
-              {
-                std::ostringstream message;
-                message << describe(a) << " and " << describe(b) << " start "
-                        << gap << " m apart, closer than the contact distance "
-                        << clearance
-                        << " m that the rigid engine keeps between surfaces: "
-                           "it would push them apart in the first step. "
-                           "Space them at least that far apart, or set a "
-                           "smaller 'Contact distance' in subsection "
-                           "'Particles' (a finer mesh lowers 'auto').";
-                throw std::runtime_error(message.str());
-              }
+            std::ostringstream message;
+            message << describe(a) << " and " << describe(b) << " start " << gap
+                    << " m apart, closer than the contact distance "
+                    << clearance
+                    << " m that the rigid engine keeps between surfaces: "
+                       "it would push them apart in the first step. "
+                       "Space them at least that far apart, or set a "
+                       "smaller 'Contact distance' in subsection "
+                       "'Particles' (a finer mesh lowers 'auto').";
+            throw std::runtime_error(message.str());
           }
+      };
+      // bounded bodies pairwise by their bounding balls; each against every
+      // unbounded one (the walls)
+      std::vector<rigid::BodyId>   bounded, unbounded;
+      std::vector<Eigen::Vector3d> centres;
+      std::vector<double>          radii;
+      for (rigid::BodyId id = 0; id < world.n_bodies(); ++id)
+        if (world.body(id).shape().is_bounded())
+          {
+            bounded.push_back(id);
+            centres.push_back(world.body(id).position);
+            radii.push_back(world.body(id).bounding_radius());
+          }
+        else
+          unbounded.push_back(id);
+      for_each_close_pair(centres,
+                          radii,
+                          clearance,
+                          3,
+                          [&](unsigned int i, unsigned int j) {
+                            check(std::min(bounded[i], bounded[j]),
+                                  std::max(bounded[i], bounded[j]));
+                          });
+      for (const rigid::BodyId b : bounded)
+        for (const rigid::BodyId w : unbounded)
+          check(std::min(b, w), std::max(b, w));
     }
   } // namespace fbm
 } // namespace particulate
