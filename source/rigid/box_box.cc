@@ -34,12 +34,23 @@ namespace particulate::rigid::detail {
 
 
 
+    /** Where a separating axis comes from. */
+    enum class AxisKind
+    {
+      none,
+      face_of_a,
+      face_of_b,
+      edge_of_a_cross_edge_of_b
+    };
+
+
+
     /** The separating axis of largest separation (smallest penetration). */
     struct SeparatingAxis
     {
-      double separation = -std::numeric_limits<double>::infinity();
-      /** 0: a face of A, 1: a face of B, 2: edge of A x edge of B. */
-      int kind = -1;
+      double   separation = -std::numeric_limits<double>::infinity();
+      AxisKind kind       = AxisKind::none;
+      /** The face axis (i), or the edge axes of A (i) and B (j). */
       int i = 0, j = 0;
       /** Unit axis from A to B. */
       Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
@@ -54,14 +65,14 @@ namespace particulate::rigid::detail {
     {
       const Eigen::Vector3d t = b.c - a.c;
       SeparatingAxis        best;
-      const auto test = [&](Eigen::Vector3d L, int kind, int i, int j) {
+      const auto test = [&](Eigen::Vector3d L, AxisKind kind, int i, int j) {
         const double len = L.norm();
         if (len < 1.e-6)
           return;
         L /= len;
         const double sep
           = std::abs(L.dot(t)) - a.extent_along(L) - b.extent_along(L);
-        const double tol = kind == 2 ?
+        const double tol = kind == AxisKind::edge_of_a_cross_edge_of_b ?
                              1.e-3 * std::min(a.e.minCoeff(), b.e.minCoeff()) :
                              1.e-9 * (a.e.norm() + b.e.norm());
         if (sep > best.separation + tol)
@@ -74,12 +85,15 @@ namespace particulate::rigid::detail {
           }
       };
       for (int i = 0; i < 3; ++i)
-        test(a.R.col(i), 0, i, 0);
+        test(a.R.col(i), AxisKind::face_of_a, i, 0);
       for (int j = 0; j < 3; ++j)
-        test(b.R.col(j), 1, j, 0);
+        test(b.R.col(j), AxisKind::face_of_b, j, 0);
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-          test(a.R.col(i).cross(b.R.col(j)), 2, i, j);
+          test(a.R.col(i).cross(b.R.col(j)),
+               AxisKind::edge_of_a_cross_edge_of_b,
+               i,
+               j);
       return best;
     }
 
@@ -124,7 +138,7 @@ namespace particulate::rigid::detail {
                         const SeparatingAxis &sat,
                         const double          margin)
     {
-      const bool            ref_is_a = sat.kind == 0;
+      const bool            ref_is_a = sat.kind == AxisKind::face_of_a;
       const PlacedBox      &ref = ref_is_a ? a : b, &inc = ref_is_a ? b : a;
       const Eigen::Vector3d nr
         = ref_is_a ? sat.axis : Eigen::Vector3d(-sat.axis);
@@ -205,7 +219,7 @@ namespace particulate::rigid::detail {
       if (r.distance > margin)
         return {};
       std::vector<ContactPoint> pts;
-      if (sat.kind != 2)
+      if (sat.kind != AxisKind::edge_of_a_cross_edge_of_b)
         pts = clipped_face_points(A, a, b, sat, margin);
       double closest = std::numeric_limits<double>::infinity();
       for (const ContactPoint &c : pts)
@@ -268,12 +282,12 @@ namespace particulate::rigid::detail {
   {
     const PlacedBox      a(A), b(B);
     const SeparatingAxis sat = best_separating_axis(a, b);
-    if (sat.separation > margin || sat.kind < 0)
+    if (sat.separation > margin || sat.kind == AxisKind::none)
       return;
     std::vector<ContactPoint> pts;
     if (sat.separation > 0.)
       pts = separated_points(A, B, a, b, sat, margin);
-    else if (sat.kind == 2)
+    else if (sat.kind == AxisKind::edge_of_a_cross_edge_of_b)
       pts.push_back(edge_edge_point(A, a, b, sat));
     else
       pts = clipped_face_points(A, a, b, sat, margin);
