@@ -13,7 +13,8 @@ namespace particulate::rigid {
    *   box–plane, capsule–plane;
    * - box–box: separating axes plus Sutherland–Hodgman clipping of the
    *   incident face against the reference face (up to 4 points), edge–edge
-   *   contacts by closest points of the edges;
+   *   contacts by closest points of the edges; boxes that are apart add
+   *   the GJK closest pair where the clipped points miss it;
    * - other convex pairs, general shapes that are convex (the elliptic
    *   cylinder) included: GJK distance warm-started from the cached normal,
    *   EPA for penetrations; convex–plane by support points in a fan of
