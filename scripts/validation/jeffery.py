@@ -9,11 +9,9 @@ closed form. Bottom: each run's angle minus the closed form.
 """
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from time_figure import save, two_panels
 
 
 def read(path):
@@ -28,8 +26,7 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     runs = [read(p) for p in sys.argv[2:]]
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True,
-                                      gridspec_kw={"height_ratios": [2, 1]})
+    fig, top, bottom = two_panels((2, 1))
     label, t, _, exact = runs[0]
     top.plot(t, exact, "k-", lw=2.5, alpha=0.35, label="Jeffery (closed form)")
     for label, t, phi, exact in runs:
@@ -37,14 +34,9 @@ def main():
         bottom.plot(t, phi - exact, lw=1, label=label)
     top.set_ylabel("angle of the long axis [rad]")
     top.legend(loc="upper right", fontsize=8)
-    top.grid(alpha=0.3)
-    bottom.set_xlabel("time [s]")
     bottom.set_ylabel("run - closed form [rad]")
     bottom.axhline(0.0, color="k", lw=0.5)
-    bottom.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(sys.argv[1], dpi=110)
-    print("wrote", sys.argv[1])
+    save(fig, top, bottom, sys.argv[1])
 
 
 if __name__ == "__main__":

@@ -10,11 +10,9 @@ the bodies' total kinetic energy (logarithmic).
 """
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from time_figure import save, two_panels
 
 
 def read(path):
@@ -29,8 +27,7 @@ def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     shapes, t, energy, heights = read(sys.argv[2])
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True,
-                                      gridspec_kw={"height_ratios": [2, 1]})
+    fig, top, bottom = two_panels((2, 1))
     colours = {}
     for i, shape in enumerate(shapes):
         first = shape not in colours
@@ -39,15 +36,10 @@ def main():
                  label=shape if first else None)
     top.set_ylabel("height of the centre [mm]")
     top.legend(loc="upper right", fontsize=8)
-    top.grid(alpha=0.3)
     moving = energy > 0.
     bottom.semilogy(t[moving], energy[moving], "k-", lw=1)
-    bottom.set_xlabel("time [s]")
     bottom.set_ylabel("kinetic energy [J]")
-    bottom.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(sys.argv[1], dpi=110)
-    print("wrote", sys.argv[1])
+    save(fig, top, bottom, sys.argv[1])
 
 
 if __name__ == "__main__":

@@ -10,11 +10,9 @@ series; the label is the one in the series' header.
 """
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from time_figure import save, two_panels
 
 
 def read(path):
@@ -27,7 +25,7 @@ def read(path):
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    fig, top, bottom = two_panels()
     for k, path in enumerate(sys.argv[2:]):
         label, d = read(path)
         colour = "C%d" % k
@@ -39,15 +37,10 @@ def main():
     top.set_ylabel("tilt of the long axis [deg]")
     top.axhline(0., color="k", lw=0.5)
     top.legend(fontsize=8)
-    top.grid(alpha=0.3)
-    bottom.set_xlabel("time [s]")
     bottom.set_ylabel("velocity [mm/s]")
     bottom.axhline(0., color="k", lw=0.5)
     bottom.legend(fontsize=8)
-    bottom.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(sys.argv[1], dpi=110)
-    print("wrote", sys.argv[1])
+    save(fig, top, bottom, sys.argv[1])
 
 
 if __name__ == "__main__":
