@@ -2,17 +2,25 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <boost/crc.hpp>
+
+#include <csignal>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace particulate {
   namespace core {
     namespace {
       namespace fs = std::filesystem;
 
-      const std::string magic = "PARTICULATE-CHECKPOINT-1";
+      const std::string magic = "PARTICULATE-CHECKPOINT";
 
       /** Whether @p value holds on every rank. */
       bool
@@ -25,6 +33,166 @@ namespace particulate {
       rank_file(const std::string &folder, const unsigned int rank)
       {
         return folder + "/rank-" + std::to_string(rank) + ".bin";
+      }
+
+      std::uint32_t
+      crc32_of(const std::string &data)
+      {
+        boost::crc_32_type crc;
+        crc.process_bytes(data.data(), data.size());
+        return crc.checksum();
+      }
+
+      /** What a rank file says about itself before its data. */
+      struct RankFileHeader
+      {
+        unsigned int  format_version;
+        unsigned int  n_ranks;
+        unsigned int  rank;
+        unsigned long data_size;
+        std::uint32_t data_crc;
+      };
+
+      void
+      write_header(std::ostream &out, const RankFileHeader &header)
+      {
+        write_binary_string(out, magic);
+        write_binary(out, header.format_version);
+        write_binary(out, header.n_ranks);
+        write_binary(out, header.rank);
+        write_binary(out, header.data_size);
+        write_binary(out, header.data_crc);
+      }
+
+      /** The header of @p in; throws if it is not a checkpoint of this
+       *  format version. Files of format 1 carried their version in the
+       *  magic string. */
+      RankFileHeader
+      read_header(std::istream &in)
+      {
+        const auto length = read_binary<unsigned long>(in);
+        if (length != magic.size() && length != magic.size() + 2)
+          throw std::runtime_error("it is not a Particulate checkpoint");
+        std::string found(length, ' ');
+        in.read(found.data(), length);
+        RankFileHeader header{};
+        if (found == magic)
+          header.format_version = read_binary<unsigned int>(in);
+        else if (found == magic + "-1")
+          header.format_version = 1;
+        else
+          throw std::runtime_error("it is not a Particulate checkpoint");
+        if (header.format_version != checkpoint_format_version)
+          throw std::runtime_error(
+            "it has checkpoint format " + std::to_string(header.format_version)
+            + " and this version of Particulate reads format "
+            + std::to_string(checkpoint_format_version)
+            + ": rerun the case from its start, or restart it with the "
+              "version that wrote the checkpoint");
+        header.n_ranks   = read_binary<unsigned int>(in);
+        header.rank      = read_binary<unsigned int>(in);
+        header.data_size = read_binary<unsigned long>(in);
+        header.data_crc  = read_binary<std::uint32_t>(in);
+        return header;
+      }
+
+      /**
+       * The data of the rank file @p path after checking its header
+       * against this run (@p n_ranks, @p rank), its length and its
+       * checksum; throws a reason otherwise.
+       */
+      std::string
+      read_verified_data(const std::string &path,
+                         const unsigned int n_ranks,
+                         const unsigned int rank)
+      {
+        std::ifstream in(path, std::ios::binary);
+        if (!in)
+          throw std::runtime_error("the file cannot be opened");
+        const RankFileHeader header = read_header(in);
+        if (header.n_ranks != n_ranks)
+          throw std::runtime_error(
+            "it was written by " + std::to_string(header.n_ranks)
+            + " MPI rank(s), and this run has " + std::to_string(n_ranks)
+            + "; restart with mpirun -np " + std::to_string(header.n_ranks));
+        if (header.rank != rank)
+          throw std::runtime_error("the rank files are mixed up");
+        std::string data(header.data_size, '\0');
+        in.read(data.data(), data.size());
+        if (!in || in.peek() != std::ifstream::traits_type::eof())
+          throw std::runtime_error(
+            "the file is not as long as its header says (truncated or "
+            "damaged)");
+        if (crc32_of(data) != header.data_crc)
+          throw std::runtime_error(
+            "its data do not match their checksum (the file is corrupted)");
+        return data;
+      }
+
+      /** Forces what was written to @p path (a file or a folder) onto the
+       *  disk. */
+      void
+      flush_to_disk(const std::string &path)
+      {
+        const int fd = ::open(path.c_str(), O_RDONLY);
+        if (fd >= 0)
+          {
+            ::fsync(fd);
+            ::close(fd);
+          }
+      }
+
+      /**
+       * Fault injection for the regression test of a save cut off half-way:
+       * with PARTICULATE_KILL_DURING_CHECKPOINT=N in the environment, rank 0
+       * kills itself (SIGKILL) in the N-th save of the process, after
+       * writing half of its data.
+       */
+      void
+      kill_if_requested(const unsigned int rank)
+      {
+        static unsigned int n_saves = 0;
+        ++n_saves;
+        const char *requested
+          = std::getenv("PARTICULATE_KILL_DURING_CHECKPOINT");
+        if (rank == 0 && requested != nullptr
+            && std::to_string(n_saves) == requested)
+          ::raise(SIGKILL);
+      }
+
+      /**
+       * Writes a rank file, flushes it to the disk and reads it back
+       * against its checksum. Whether all of that succeeded.
+       */
+      bool
+      write_verified_rank_file(const std::string    &path,
+                               const RankFileHeader &header,
+                               const std::string    &data)
+      {
+        {
+          std::ofstream out(path, std::ios::binary);
+          if (!out)
+            return false;
+          write_header(out, header);
+          const std::size_t half = data.size() / 2;
+          out.write(data.data(), half);
+          out.flush();
+          kill_if_requested(header.rank);
+          out.write(data.data() + half, data.size() - half);
+          out.flush();
+          if (!out)
+            return false;
+        }
+        flush_to_disk(path);
+        try
+          {
+            read_verified_data(path, header.n_ranks, header.rank);
+            return true;
+          }
+        catch (const std::exception &)
+          {
+            return false;
+          }
       }
     } // namespace
 
@@ -100,34 +268,34 @@ namespace particulate {
         }
       MPI_Barrier(communicator);
 
-      bool written = false;
-      {
-        std::ofstream out(rank_file(fresh, rank), std::ios::binary);
-        if (out)
-          {
-            write_binary_string(out, magic);
-            write_binary<unsigned int>(out, n_ranks);
-            write_binary<unsigned int>(out, rank);
-            write_rank_data(out);
-            out.flush();
-            written = bool(out);
-          }
-      }
+      std::ostringstream data;
+      write_rank_data(data);
+      const RankFileHeader header{checkpoint_format_version,
+                                  n_ranks,
+                                  rank,
+                                  data.str().size(),
+                                  crc32_of(data.str())};
+      const bool           written
+        = write_verified_rank_file(rank_file(fresh, rank), header, data.str());
       if (!on_all_ranks(written, communicator))
-        throw std::runtime_error("Cannot write the checkpoint into '" + fresh
-                                 + "' (disk full or not writable?). The "
-                                   "previous checkpoint is kept.");
+        throw std::runtime_error(
+          "Cannot write the checkpoint into '" + fresh
+          + "' (disk full or not writable?): a rank file could not "
+            "be written or did not read back intact. "
+            "The previous checkpoint is kept.");
       if (rank == 0)
         {
           std::ofstream info(fresh + "/info.txt");
           info << std::setprecision(17) << "time " << time << "\nstep " << step
                << "\nranks " << n_ranks << "\n";
           info.close();
+          flush_to_disk(fresh);
           // swap: the old checkpoint goes only after the new one is in place
           fs::remove_all(stale);
           if (fs::exists(directory()))
             fs::rename(directory(), stale);
           fs::rename(fresh, directory());
+          flush_to_disk(output_directory);
           fs::remove_all(stale);
         }
       MPI_Barrier(communicator);
@@ -135,13 +303,23 @@ namespace particulate {
 
 
 
-    bool
-    Checkpoint::exists() const
+    std::string
+    Checkpoint::complete_directory() const
     {
       const unsigned int rank
         = dealii::Utilities::MPI::this_mpi_process(communicator);
-      return on_all_ranks(fs::exists(rank_file(directory(), rank)),
-                          communicator);
+      for (const std::string &folder : {directory(), directory() + ".old"})
+        if (on_all_ranks(fs::exists(rank_file(folder, rank)), communicator))
+          return folder;
+      return "";
+    }
+
+
+
+    bool
+    Checkpoint::exists() const
+    {
+      return !complete_directory().empty();
     }
 
 
@@ -154,29 +332,41 @@ namespace particulate {
         = dealii::Utilities::MPI::this_mpi_process(communicator);
       const unsigned int n_ranks
         = dealii::Utilities::MPI::n_mpi_processes(communicator);
-      if (!exists())
+      const std::string folder = complete_directory();
+      if (folder.empty())
         throw std::runtime_error(
           "--restart: there is no complete checkpoint in '" + directory()
           + "'. Set 'Step interval' or 'Wall-time interval' in subsection "
             "'Checkpoint' and run the case without --restart first.");
-      std::ifstream in(rank_file(directory(), rank), std::ios::binary);
+
+      // every rank's file is verified before any rank reads its state:
+      // the reading is collective
+      std::string data, problem;
       try
         {
-          if (read_binary_string(in) != magic)
-            throw std::runtime_error("it is not a Particulate checkpoint");
-          const auto saved_ranks = read_binary<unsigned int>(in);
-          if (saved_ranks != n_ranks)
-            throw std::runtime_error(
-              "it was written by " + std::to_string(saved_ranks)
-              + " MPI rank(s), and this run has " + std::to_string(n_ranks)
-              + "; restart with mpirun -np " + std::to_string(saved_ranks));
-          if (read_binary<unsigned int>(in) != rank)
-            throw std::runtime_error("the rank files are mixed up");
-          read_rank_data(in);
+          data = read_verified_data(rank_file(folder, rank), n_ranks, rank);
         }
       catch (const std::exception &e)
         {
-          throw std::runtime_error("Cannot restart from '" + directory()
+          problem = "rank-" + std::to_string(rank) + ".bin: " + e.what();
+        }
+      for (const std::string &p :
+           dealii::Utilities::MPI::all_gather(communicator, problem))
+        if (!p.empty())
+          throw std::runtime_error("Cannot restart from '" + folder + "': " + p
+                                   + ".");
+
+      std::istringstream in(data);
+      try
+        {
+          read_rank_data(in);
+          if (in.peek() != std::istringstream::traits_type::eof())
+            throw std::runtime_error(
+              "it holds more data than this version of Particulate reads");
+        }
+      catch (const std::exception &e)
+        {
+          throw std::runtime_error("Cannot restart from '" + folder
                                    + "': " + e.what() + ".");
         }
     }

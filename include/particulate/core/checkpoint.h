@@ -40,10 +40,19 @@ namespace particulate {
     /**
      * Checkpoint files of a distributed run in `<output>/checkpoint/`: one
      * binary file per rank (`rank-<r>.bin`, the rank's part of the state)
-     * and `info.txt` (time, step, number of ranks, for people). A new
-     * checkpoint is written into `checkpoint.new/` and swapped in only when
-     * every rank has finished writing, so a run cut off while saving keeps
-     * its previous checkpoint.
+     * and `info.txt` (time, step, number of ranks, for people).
+     *
+     * A rank file starts with a header: the magic string, the format
+     * version (checkpoint_format_version), the number of ranks, the rank,
+     * the size of the rank's data and its CRC-32; the data follow. A new
+     * checkpoint is written into `checkpoint.new/`, each file flushed to
+     * the disk and read back against its checksum, and swapped in only when
+     * every rank's file has passed; a run cut off while saving keeps its
+     * previous checkpoint (in `checkpoint.old/` if it was cut off between
+     * the two renames of the swap, where load() finds it too). load()
+     * verifies every header and checksum on every rank before any rank
+     * reads its state, so a damaged file stops all ranks with the same
+     * message instead of leaving some in a collective read.
      */
     class Checkpoint
     {
@@ -52,7 +61,7 @@ namespace particulate {
       Checkpoint(const std::string &output_directory, MPI_Comm comm);
 
       /**
-       * Collective. Calls @p write_rank_data with this rank's file and
+       * Collective. Calls @p write_rank_data with this rank's stream and
        * swaps the new checkpoint in. @p time and @p step go to info.txt.
        */
       void
@@ -65,10 +74,11 @@ namespace particulate {
       exists() const;
 
       /**
-       * Collective. Opens this rank's file of the last checkpoint, checks
-       * its header and that it was written by as many ranks as run now, and
-       * hands it to @p read_rank_data. Throws std::runtime_error naming the
-       * folder and what to do.
+       * Collective. Verifies this rank's file of the last checkpoint (its
+       * header, that as many ranks wrote it as run now, its size and
+       * checksum) on every rank, then hands its data to @p read_rank_data
+       * and checks that it read them all. Throws std::runtime_error naming
+       * the folder, the file and what to do.
        */
       void
       load(const std::function<void(std::istream &)> &read_rank_data) const;
@@ -78,9 +88,21 @@ namespace particulate {
       directory() const;
 
     private:
+      /** directory(), or the previous checkpoint if a save was cut off
+       *  between the renames of its swap. */
+      std::string
+      complete_directory() const;
+
       std::string output_directory;
       MPI_Comm    communicator;
     };
+
+    /**
+     * Version of the layout of the checkpoint's rank data. Raise it with
+     * every change of what a run writes into a checkpoint: a restart from a
+     * file of another version is refused, with both versions named.
+     */
+    constexpr unsigned int checkpoint_format_version = 2;
 
     /** Writes the bytes of a trivially copyable value. */
     template <typename T>
