@@ -438,11 +438,16 @@ namespace particulate {
             "run that wrote the checkpoint.");
       std::ostringstream kept;
       std::string        line;
-      const double       eps = 1e-12 * std::max(1., std::abs(time));
+      const double       eps       = 1e-12 * std::max(1., std::abs(time));
+      bool               in_header = true;
       while (std::getline(in, line))
         {
-          if (!line.empty() && line[0] != '#')
+          const bool note = !line.empty() && line[0] == '#';
+          if (note && !in_header)
+            continue; // e.g. why a run stopped: the restart goes on
+          if (!note)
             {
+              in_header = false;
               std::istringstream row(line);
               double             t = 0.;
               if (!(row >> t) || t > time + eps)

@@ -1,5 +1,6 @@
 #include <particulate/core/time_series_writer.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <stdexcept>
 
@@ -43,6 +44,18 @@ namespace particulate {
       for (unsigned int i = 0; i < values.size(); ++i)
         out << (i > 0 ? " " : "") << values[i];
       out << std::endl;
+    }
+
+
+
+    void
+    TimeSeriesWriter::write_note(const std::string &text)
+    {
+      if (!writer)
+        return;
+      std::string line = text;
+      std::replace(line.begin(), line.end(), '\n', ' ');
+      out << "# " << line << std::endl;
     }
   } // namespace core
 } // namespace particulate

@@ -6,6 +6,8 @@
 #include <array>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace particulate {
@@ -39,6 +41,23 @@ namespace particulate {
                                                       columns,
                                                       communicator,
                                                       restart);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::note_stop(const double       time,
+                                          const std::string &reason)
+    {
+      std::ostringstream note;
+      note << "run stopped after t = " << time << " s: " << reason;
+      for (const auto &series : body_series)
+        series->write_note(note.str());
+      for (core::TimeSeriesWriter *series :
+           {mesh_series.get(), flow_series.get()})
+        if (series != nullptr)
+          series->write_note(note.str());
     }
 
 

@@ -3,6 +3,7 @@
 #include <particulate/core/time_series_writer.h>
 #include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/fbm/body_coupling_state.h>
+#include <particulate/fbm/body_state_guard.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
 #include <particulate/fbm/particle_set_checks.h>
@@ -96,6 +97,7 @@ namespace particulate {
       std::unique_ptr<rigid::World>                       world;
       std::vector<rigid::BodyId>                          ids;
       RigidBodyUpdate                                     rigid_update;
+      std::unique_ptr<BodyStateGuard>                     guard;
       std::unique_ptr<FictitiousBoundary<dim>>            interface;
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
       std::vector<BodyCouplingState>                      states;
@@ -146,31 +148,51 @@ namespace particulate {
         solve_steady();
       else
         {
-          while (!at_end_time())
+          try
             {
-              const double k = dt  = std::min(dt, time_p.end_time - t);
-              const auto   started = std::chrono::steady_clock::now();
-              {
-                // everything of a step but output and diagnostics
-                TimerOutput::Scope scope(run_->timer, "coupled step (total)");
-                move_mesh(k);
-                impose_interface(k);
-                advance_fluid(k);
-                compute_loads(k);
-                advance_bodies(k);
-              }
-              run_->summary.step_seconds.push_back(
-                std::chrono::duration<double>(std::chrono::steady_clock::now()
-                                              - started)
-                  .count());
-              write_output(k);
-              if (time_p.adaptive)
-                dt = time_p.next_time_step(dt, run_->flow->cfl_number(dt));
-              if (checkpoint_due())
-                write_checkpoint();
+              run_time_steps();
+            }
+          catch (const std::exception &e)
+            {
+              // the series end with why; the checkpoint and the output
+              // written so far stay as they are
+              run_->output.note_stop(t, e.what());
+              throw;
             }
         }
       return summarise();
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::run_time_steps()
+    {
+      const auto &time_p = parameters.flow.time;
+      while (!at_end_time())
+        {
+          const double k = dt  = std::min(dt, time_p.end_time - t);
+          const auto   started = std::chrono::steady_clock::now();
+          {
+            // everything of a step but output and diagnostics
+            TimerOutput::Scope scope(run_->timer, "coupled step (total)");
+            move_mesh(k);
+            impose_interface(k);
+            advance_fluid(k);
+            compute_loads(k);
+            advance_bodies(k);
+          }
+          run_->summary.step_seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                          - started)
+              .count());
+          write_output(k);
+          if (time_p.adaptive)
+            dt = time_p.next_time_step(dt, run_->flow->cfl_number(dt));
+          if (checkpoint_due())
+            write_checkpoint();
+        }
     }
 
 
@@ -428,6 +450,18 @@ namespace particulate {
               Eigen::Quaterniond::Identity(),
               true);
         }
+      DomainBox domain;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          domain.lower[d] = r.box_lower[d];
+          domain.upper[d] = r.box_upper[d];
+        }
+      domain.walls         = particle_p.walls;
+      domain.mirror_planes = particle_p.symmetry_planes;
+      domain.dim           = dim;
+      r.guard              = std::make_unique<BodyStateGuard>(domain,
+                                                 r.ids,
+                                                 world_p.contact_offset);
     }
 
 
@@ -805,7 +839,9 @@ namespace particulate {
       Run &r = *run_;
       {
         TimerOutput::Scope scope(r.timer, "rigid bodies");
+        r.guard->start_step(*r.world);
         r.rigid_update.advance(*r.world, r.ids, r.states, k, t + k);
+        r.guard->check_step(*r.world, t + k, k);
       }
       t += k;
       ++step;

@@ -163,8 +163,9 @@ namespace particulate {
     /**
      * Restart of a time series: keeps the header and the rows of
      * @p filename whose first column (the time) is at most @p time, and
-     * drops the rows a cut-off run wrote after its last checkpoint. Call on
-     * one rank.
+     * drops the rows a cut-off run wrote after its last checkpoint and the
+     * comment lines after the header (the note of why a run stopped). Call
+     * on one rank.
      */
     void
     truncate_time_series(const std::string &filename, const double time);

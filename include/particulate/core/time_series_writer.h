@@ -34,6 +34,10 @@ namespace particulate {
       void
       write_row(const std::vector<double> &values);
 
+      /** Write @p text as a comment line (`# text`, one line). */
+      void
+      write_note(const std::string &text);
+
       const std::vector<std::string> &
       column_names() const
       {

@@ -101,6 +101,11 @@ namespace particulate {
                    const unsigned int              step,
                    const double                    time);
 
+      /** Ends every `.dat` series with a comment line saying that the run
+       *  stopped after @p time and why (@p reason). */
+      void
+      note_stop(const double time, const std::string &reason);
+
       /** The ParaView series written so far, for a checkpoint. */
       void
       save(std::ostream &out) const;

@@ -91,8 +91,9 @@ namespace particulate {
      *     integrals (eq. 5.13);
      *  5. advance_bodies(): the rigid engine moves the bodies with the
      *     fluid loads, buoyancy-corrected gravity and contacts (eq. 5.3;
-     *     RigidBodyUpdate), the domain walls being fixed half-spaces; bodies
-     *     that do not move before a step are marked at t_n+1;
+     *     RigidBodyUpdate), the domain walls being fixed half-spaces, and
+     *     BodyStateGuard stops the run if a body went wrong; bodies that do
+     *     not move before a step are marked at t_n+1;
      *  6. write_output(): the time series, the ParaView output and the
      *     progress line;
      *  7. write_checkpoint() when one is due.
@@ -254,6 +255,10 @@ namespace particulate {
        *  particle 0. */
       std::string
       leading_speed() const;
+      /** The time loop: the stages of each step, the output and the
+       *  checkpoints, up to 'End time'. */
+      void
+      run_time_steps();
       /** Time steps of a steady case: one nonlinear solve. */
       void
       solve_steady();

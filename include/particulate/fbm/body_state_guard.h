@@ -1,0 +1,111 @@
+#ifndef particulate_fbm_body_state_guard_h
+#define particulate_fbm_body_state_guard_h
+
+#include <particulate/rigid/world.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace particulate {
+  namespace fbm {
+    /** The box of the mesh and what its faces are to the bodies. */
+    struct DomainBox
+    {
+      Eigen::Vector3d lower = Eigen::Vector3d::Zero();
+      Eigen::Vector3d upper = Eigen::Vector3d::Zero();
+      /// faces x-, x+, y-, y+, z-, z+ that are walls of the rigid engine
+      std::array<bool, 6> walls{};
+      /// faces that are mirror planes of a symmetric set-up
+      std::array<bool, 6> mirror_planes{};
+      unsigned int        dim = 3;
+    };
+
+    /**
+     * The physical sanity checks of the bodies after each coupled step. A
+     * run that fails one stops with a message saying what happened, to
+     * which particle, and what to do, before the step's state is written
+     * anywhere. In the order checked:
+     * - a position, orientation or velocity that is no longer finite;
+     * - a body that moved farther in one step than its size (the smallest
+     *   edge of its bounding box): the time step is too large for it, and
+     *   the message gives the step that its speed allows;
+     * - a body that crossed a wall of the rigid engine by more than the
+     *   contact distance (at least 1 % of its size, since DEM contacts
+     *   overlap by design): its contacts failed;
+     * - a body whose centre left the domain through a face that is not a
+     *   wall or a mirror plane.
+     * Bodies that are immovable in the engine (fixed and prescribed
+     * particles, walls) are not checked.
+     */
+    class BodyStateGuard
+    {
+    public:
+      /**
+       * @param particle_ids The particles' bodies in the world, in the
+       *   order of the particle set (the messages name particle i).
+       * @param contact_distance The rigid engine's contact distance [m].
+       */
+      BodyStateGuard(const DomainBox                  &domain,
+                     const std::vector<rigid::BodyId> &particle_ids,
+                     const double                      contact_distance);
+
+      /** Remembers where the bodies are at the start of a step. */
+      void
+      start_step(const rigid::World &world);
+
+      /**
+       * Checks the bodies at the end of the step from @p t - @p dt to
+       * @p t.
+       * @throw std::runtime_error saying what happened, to which particle,
+       *   and what to do
+       */
+      void
+      check_step(const rigid::World &world,
+                 const double        t,
+                 const double        dt) const;
+
+    private:
+      void
+      check_finite(const rigid::RigidBody &body,
+                   const unsigned int      i,
+                   const double            t) const;
+      void
+      check_displacement(const rigid::RigidBody &body,
+                         const unsigned int      i,
+                         const double            t,
+                         const double            dt) const;
+      void
+      check_walls(const rigid::RigidBody &body,
+                  const unsigned int      i,
+                  const double            t,
+                  const double            dt) const;
+      void
+      check_inside(const rigid::RigidBody &body,
+                   const unsigned int      i,
+                   const double            t) const;
+
+      DomainBox                    domain;
+      std::vector<rigid::BodyId>   ids;
+      double                       contact_distance;
+      std::vector<Eigen::Vector3d> start_positions;
+    };
+
+    /** The smallest edge of the body's bounding box among the first
+     *  @p dim axes [m]: the size that a step may not move it by. */
+    double
+    body_size(const rigid::RigidBody &body, const unsigned int dim);
+
+    /** The coordinate of the body's furthest point along the world axis
+     *  @p d, towards + (@p positive) or - (exact for convex shapes, the
+     *  placed bounding box for the others). */
+    double
+    body_reach(const rigid::RigidBody &body,
+               const unsigned int      d,
+               const bool              positive);
+  } // namespace fbm
+} // namespace particulate
+
+#endif

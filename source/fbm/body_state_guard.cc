@@ -1,0 +1,237 @@
+#include <particulate/fbm/body_state_guard.h>
+#include <particulate/geometry/pose.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace particulate {
+  namespace fbm {
+    namespace {
+      const char *const face_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+
+      bool
+      finite(const Eigen::Vector3d &v)
+      {
+        return v.allFinite();
+      }
+
+      /** Calls @p f(d, positive, face) for the faces x-, x+, y-, ... of a
+       *  box in @p dim dimensions (face = 2 d + positive). */
+      template <typename Function>
+      void
+      for_each_face(const unsigned int dim, const Function &f)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          for (const bool positive : {false, true})
+            f(d, positive, 2 * d + (positive ? 1 : 0));
+      }
+
+      [[noreturn]] void
+      stop(const std::ostringstream &message)
+      {
+        throw std::runtime_error(message.str());
+      }
+    } // namespace
+
+
+
+    double
+    body_size(const rigid::RigidBody &body, const unsigned int dim)
+    {
+      const geometry::BoundingBox box  = body.shape().bounding_box();
+      double                      size = box.upper[0] - box.lower[0];
+      for (unsigned int d = 1; d < dim; ++d)
+        size = std::min(size, box.upper[d] - box.lower[d]);
+      return size;
+    }
+
+
+
+    double
+    body_reach(const rigid::RigidBody &body,
+               const unsigned int      d,
+               const bool              positive)
+    {
+      const double           sign = positive ? 1. : -1.;
+      const geometry::Pose   pose(body.orientation, body.position);
+      const geometry::Shape &shape = body.shape();
+      if (shape.is_convex())
+        {
+          Eigen::Vector3d axis        = Eigen::Vector3d::Zero();
+          axis[d]                     = sign;
+          const Eigen::Vector3d local = body.orientation.conjugate() * axis;
+          return pose.to_world(shape.support(local))[d];
+        }
+      const geometry::BoundingBox box = pose.to_world(shape.bounding_box());
+      return positive ? box.upper[d] : box.lower[d];
+    }
+
+
+
+    BodyStateGuard::BodyStateGuard(
+      const DomainBox                  &domain,
+      const std::vector<rigid::BodyId> &particle_ids,
+      const double                      contact_distance)
+      : domain(domain)
+      , ids(particle_ids)
+      , contact_distance(contact_distance)
+    {}
+
+
+
+    void
+    BodyStateGuard::start_step(const rigid::World &world)
+    {
+      start_positions.resize(ids.size());
+      for (unsigned int i = 0; i < ids.size(); ++i)
+        start_positions[i] = world.body(ids[i]).position;
+    }
+
+
+
+    void
+    BodyStateGuard::check_step(const rigid::World &world,
+                               const double        t,
+                               const double        dt) const
+    {
+      for (unsigned int i = 0; i < ids.size(); ++i)
+        {
+          const rigid::RigidBody &body = world.body(ids[i]);
+          if (body.is_fixed())
+            continue;
+          check_finite(body, i, t);
+          check_displacement(body, i, t, dt);
+          check_walls(body, i, t, dt);
+          check_inside(body, i, t);
+        }
+    }
+
+
+
+    void
+    BodyStateGuard::check_finite(const rigid::RigidBody &body,
+                                 const unsigned int      i,
+                                 const double            t) const
+    {
+      if (finite(body.position) && finite(body.linear_velocity)
+          && finite(body.angular_velocity)
+          && body.orientation.coeffs().allFinite())
+        return;
+      std::ostringstream message;
+      message << "Particle " << i << " has a position or velocity that is "
+              << "no longer finite (NaN or Inf) at t = " << t
+              << " s: the coupling of the particle and the fluid diverged. "
+                 "Reduce 'Time step' in subsection 'Time', or raise 'Added "
+                 "mass coefficient' in subsection 'Particles' for a light "
+                 "particle.";
+      stop(message);
+    }
+
+
+
+    void
+    BodyStateGuard::check_displacement(const rigid::RigidBody &body,
+                                       const unsigned int      i,
+                                       const double            t,
+                                       const double            dt) const
+    {
+      if (start_positions.size() != ids.size())
+        return;
+      const double size = body_size(body, domain.dim);
+      const double moved
+        = (body.position - start_positions[i]).head(domain.dim).norm();
+      if (moved <= size)
+        return;
+      const double       speed = moved / dt;
+      std::ostringstream message;
+      message << "Particle " << i << " moved " << moved
+              << " m in the step from t = " << t - dt << " to " << t
+              << " s, more than its size " << size
+              << " m (the smallest edge of its bounding box): the time "
+                 "step is too large for it (or the coupling diverged). At "
+                 "its mean speed in the step, "
+              << speed
+              << " m/s, a time step below size / speed = " << size / speed
+              << " s keeps it within its size; the fictitious boundary "
+                 "method needs a much smaller one, of the order of a cell "
+                 "size / speed. Reduce 'Time step' in subsection 'Time'.";
+      stop(message);
+    }
+
+
+
+    void
+    BodyStateGuard::check_walls(const rigid::RigidBody &body,
+                                const unsigned int      i,
+                                const double            t,
+                                const double            dt) const
+    {
+      const double tolerance
+        = std::max(contact_distance, 0.01 * body_size(body, domain.dim));
+      for_each_face(
+        domain.dim,
+        [&](const unsigned int d,
+            const bool         positive,
+            const unsigned int face) {
+          if (!domain.walls[face])
+            return;
+          const double wall   = positive ? domain.upper[d] : domain.lower[d];
+          const double beyond = positive ? body_reach(body, d, true) - wall :
+                                           wall - body_reach(body, d, false);
+          if (beyond <= tolerance)
+            return;
+          std::ostringstream message;
+          message << "Particle " << i << " crossed the wall "
+                  << face_names[face] << " at t = " << t << " s: it reaches "
+                  << beyond << " m beyond it, more than the tolerance "
+                  << tolerance
+                  << " m (the contact distance, at least 1 % of its size). "
+                     "Its contact with the wall failed at its speed of "
+                  << body.linear_velocity.norm() << " m/s ("
+                  << body.linear_velocity.norm() * dt
+                  << " m per time step, against a contact distance of "
+                  << contact_distance
+                  << " m). Reduce 'Time step' in subsection 'Time' or "
+                     "raise 'Rigid substeps' "
+                     "in subsection 'Particles'.";
+          stop(message);
+        });
+    }
+
+
+
+    void
+    BodyStateGuard::check_inside(const rigid::RigidBody &body,
+                                 const unsigned int      i,
+                                 const double            t) const
+    {
+      const double tolerance
+        = 1e-9 * (domain.upper - domain.lower).head(domain.dim).norm();
+      for_each_face(
+        domain.dim,
+        [&](const unsigned int d,
+            const bool         positive,
+            const unsigned int face) {
+          if (domain.mirror_planes[face])
+            return;
+          const double x       = body.position[d];
+          const bool   outside = positive ? x > domain.upper[d] + tolerance :
+                                            x < domain.lower[d] - tolerance;
+          if (!outside)
+            return;
+          std::ostringstream message;
+          message << "Particle " << i << " left the domain at t = " << t
+                  << " s: its centre is at "
+                  << "xyz"[d] << " = " << x << " m, beyond the face "
+                  << face_names[face] << " at "
+                  << (positive ? domain.upper[d] : domain.lower[d])
+                  << " m, which is not a wall. Make that face a wall with "
+                     "'Domain walls' in subsection 'Particles', or end the "
+                     "run ('End time') before the particle reaches it.";
+          stop(message);
+        });
+    }
+  } // namespace fbm
+} // namespace particulate
