@@ -67,9 +67,13 @@ namespace particulate {
         = state.fluid_load.force
           + (particle_density[i] - fluid_density) * b.volume() * gravity
           + m_a * state.acceleration;
-      const Eigen::Matrix3d I_a = b.inertia_world() - true_inertia_world(i, b);
-      Eigen::Vector3d       torque
-        = state.fluid_load.torque + I_a * state.angular_acceleration;
+      // the engine turns the body with I + I_a, gyroscopic term included:
+      // I_a alpha_n + omega x (I_a omega) leaves I's own dynamics
+      const Eigen::Matrix3d  I_a = b.inertia_world() - true_inertia_world(i, b);
+      const Eigen::Vector3d &omega  = b.angular_velocity;
+      Eigen::Vector3d        torque = state.fluid_load.torque
+                               + I_a * state.angular_acceleration
+                               + omega.cross(I_a * omega);
       for (unsigned int d = 0; d < 3; ++d)
         {
           if (locked_translation[d])

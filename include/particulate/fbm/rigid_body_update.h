@@ -20,9 +20,15 @@ namespace particulate {
      * The explicit coupling is stabilised by an added-mass correction: the
      * engine integrates each body with the mass m + m_a and the inertia
      * I + I_a (its material density is rho_p + C rho_f), and the force gets
-     * m_a a_n, the torque I_a alpha_n, with the accelerations of the step
-     * before. Where the loads do not change, the accelerations converge to
-     * those of the true mass geometrically, with the ratio m_a / (m + m_a).
+     * m_a a_n, the torque I_a alpha_n + omega_n x (I_a omega_n), with the
+     * accelerations and the angular velocity of the step before. Where the
+     * loads do not change, the accelerations converge to those of the true
+     * mass geometrically, with the ratio m_a / (m + m_a). The gyroscopic
+     * part matters for a body that is not a sphere turning about an axis
+     * that is not a principal one: the engine's Euler equations carry
+     * omega x ((I + I_a) omega), and without it the body would turn as if
+     * it were 1 + C times as heavy against the fluid's torque (a spheroid in
+     * shear flow drifted off its Jeffery orbit).
      *
      * Locked axes (symmetry planes, planar motion) get no force or torque,
      * and what contacts or rounding did along them is undone. A contact
