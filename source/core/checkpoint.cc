@@ -290,10 +290,14 @@ namespace particulate {
                << "\nranks " << n_ranks << "\n";
           info.close();
           flush_to_disk(fresh);
-          // swap: the old checkpoint goes only after the new one is in place
-          fs::remove_all(stale);
+          // swap: the old checkpoint goes only after the new one is in
+          // place (a checkpoint.old left by a save cut off in its swap, with
+          // no checkpoint/ beside it, is the complete one until then)
           if (fs::exists(directory()))
-            fs::rename(directory(), stale);
+            {
+              fs::remove_all(stale);
+              fs::rename(directory(), stale);
+            }
           fs::rename(fresh, directory());
           flush_to_disk(output_directory);
           fs::remove_all(stale);
