@@ -268,15 +268,16 @@ namespace particulate {
         }
       MPI_Barrier(communicator);
 
-      std::ostringstream data;
-      write_rank_data(data);
+      std::ostringstream stream;
+      write_rank_data(stream);
+      const std::string    data = stream.str();
       const RankFileHeader header{checkpoint_format_version,
                                   n_ranks,
                                   rank,
-                                  data.str().size(),
-                                  crc32_of(data.str())};
+                                  data.size(),
+                                  crc32_of(data)};
       const bool           written
-        = write_verified_rank_file(rank_file(fresh, rank), header, data.str());
+        = write_verified_rank_file(rank_file(fresh, rank), header, data);
       if (!on_all_ranks(written, communicator))
         throw std::runtime_error(
           "Cannot write the checkpoint into '" + fresh
