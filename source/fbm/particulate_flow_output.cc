@@ -7,7 +7,6 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace particulate {
