@@ -370,12 +370,9 @@ namespace particulate {
         "every motion (twice per fractional-step theta step, one per kind of "
         "stage). keep: the V-cycle of the last geometry stays the "
         "preconditioner (FGMRES always applies the current operator) until "
-        "the FGMRES iterations it needs beyond the median of the last five "
-        "solves with a fresh V-cycle have cost, in measured wall time, as "
-        "much as building the current V-cycle did (its geometry and "
-        "linearisations), or until a solve does not converge; then it is "
-        "rebuilt. The choice depends on measured times, so two runs agree "
-        "to the solver tolerances, not bit for bit. A fresh adaptation, "
+        "a solve needs more than 1.5 times the median FGMRES iterations of "
+        "the last five solves with a fresh V-cycle plus 5, or does not "
+        "converge; then it is rebuilt. A fresh adaptation, "
         "which interpolates the flow onto a new mesh, and a checkpoint "
         "always rebuild.");
       prm.declare_entry("Chebyshev degree",

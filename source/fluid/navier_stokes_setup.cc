@@ -157,8 +157,6 @@ namespace particulate {
         }
       velocity_multigrid_is_current = false;
       multigrid_geometry_is_stale   = false;
-      multigrid_build_seconds       = 0.;
-      multigrid_extra_seconds       = 0.;
       fresh_multigrid_iterations.clear();
       momentum_operator.reset();
       if (parameters.linear_solver.velocity_operator == "matrix-free")
@@ -633,14 +631,9 @@ namespace particulate {
     void
     NavierStokes<dim>::refresh_multigrid_geometry()
     {
-      const auto start = std::chrono::steady_clock::now();
       velocity_multigrid->update_geometry();
       velocity_multigrid_is_current = false;
       multigrid_geometry_is_stale   = false;
-      multigrid_build_seconds       = std::chrono::duration<double>(
-                                  std::chrono::steady_clock::now() - start)
-                                  .count();
-      multigrid_extra_seconds = 0.;
     }
 
 

@@ -1,4 +1,5 @@
 #include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/solver_failure.h>
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/precondition.h>
@@ -7,7 +8,6 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -392,8 +392,6 @@ namespace particulate {
     void
     NavierStokes<dim>::linearise_velocity_multigrid(const Stage &stage)
     {
-      // part of what the current geometry's V-cycles cost ('keep')
-      const auto                    start = std::chrono::steady_clock::now();
       TrilinosWrappers::MPI::Vector velocity(owned_partitioning[0],
                                              communicator);
       velocity          = solution.block(0);
@@ -404,9 +402,6 @@ namespace particulate {
         stage.theta_implicit,
         *viscosity_model);
       velocity_multigrid_is_current = true;
-      multigrid_build_seconds += std::chrono::duration<double>(
-                                   std::chrono::steady_clock::now() - start)
-                                   .count();
     }
 
 
@@ -510,8 +505,7 @@ namespace particulate {
             control,
             SolverFGMRES<BlockVector>::AdditionalData(
               parameters.linear_solver.krylov_size));
-          newton_update    = 0;
-          const auto start = std::chrono::steady_clock::now();
+          newton_update = 0;
           try
             {
               solver.solve(system, newton_update, system_rhs, preconditioner);
@@ -534,10 +528,7 @@ namespace particulate {
               std::ostringstream message;
               message << "The linear solver (FGMRES) did not converge in "
                       << e.last_step << " iterations (residual "
-                      << e.last_residual << ", target " << tolerance
-                      << "). Reduce 'Time step' in subsection 'Time', or "
-                         "raise 'Maximum iterations' in subsection 'Linear "
-                         "solver'.";
+                      << e.last_residual << ", target " << tolerance << ").";
               if (!std::isfinite(e.last_residual))
                 message << " "
                         << locate_non_finite(momentum_operator ? nullptr :
@@ -546,7 +537,11 @@ namespace particulate {
                                              velocity_inverse,
                                              *mass_ilu,
                                              laplace_inverse);
-              throw std::runtime_error(message.str());
+              throw SolverFailure(
+                SolverFailure::Kind::linear,
+                message.str(),
+                "Reduce 'Time step' in subsection 'Time', or raise 'Maximum "
+                "iterations' in subsection 'Linear solver'.");
             }
           zero_constraints.distribute(newton_update);
           pressure_poisson_solves += laplace_inverse.solves;
@@ -577,35 +572,19 @@ namespace particulate {
                 }
               else
                 {
-                  // Rent or buy: the stale V-cycle is rebuilt once its
-                  // extra iterations have cost what building it did, so a
-                  // run pays at most about twice the better of always
-                  // rebuilding and never rebuilding. Both times are the
-                  // slowest rank's, so that all ranks decide alike.
-                  const double seconds
-                    = std::chrono::duration<double>(
-                        std::chrono::steady_clock::now() - start)
-                        .count();
-                  multigrid_extra_seconds
-                    = std::max(0.,
-                               multigrid_extra_seconds
-                                 + (static_cast<double>(iterations)
-                                    - multigrid_reference_iterations)
-                                     * seconds / std::max(iterations, 1u));
-                  const double extra
-                    = Utilities::MPI::max(multigrid_extra_seconds,
-                                          communicator);
-                  const double build
-                    = Utilities::MPI::max(multigrid_build_seconds,
-                                          communicator);
+                  // The stale V-cycle is rebuilt once it needs half as
+                  // many iterations again as a fresh one (plus 5), the rule
+                  // of the kept AMG below: a count, so that the choice and
+                  // the run's numbers do not depend on the machine's load
+                  const bool rebuild
+                    = iterations > 1.5 * multigrid_reference_iterations + 5;
                   if (parameters.linear_solver.verbose)
                     pcout << "      kept V-cycle: " << iterations
                           << " FGMRES iterations against "
                           << multigrid_reference_iterations
-                          << " with a fresh one; extra iterations have cost "
-                          << extra << " s, building it " << build << " s"
-                          << (extra >= build ? ": rebuilt" : "") << std::endl;
-                  if (extra >= build)
+                          << " with a fresh one" << (rebuild ? ": rebuilt" : "")
+                          << std::endl;
+                  if (rebuild)
                     refresh_multigrid_geometry(); // for the next solve
                 }
               return iterations;
@@ -658,12 +637,13 @@ namespace particulate {
       while (!(residual <= target))
         {
           if (!std::isfinite(residual))
-            throw std::runtime_error(
+            throw SolverFailure(
+              SolverFailure::Kind::non_finite,
               "The flow solution is no longer finite (NaN or Inf in the "
               "residual at t = "
-              + std::to_string(stage.time_new)
-              + " s). The time step is probably too large for this mesh: "
-                "reduce 'Time step' in subsection 'Time'.");
+                + std::to_string(stage.time_new) + " s).",
+              "The time step is probably too large for this mesh: reduce "
+              "'Time step' in subsection 'Time'.");
           if (stats.nonlinear_iterations == nl.maximum_iterations)
             {
               std::ostringstream message;
@@ -671,10 +651,12 @@ namespace particulate {
                       << nl.maximum_iterations
                       << " iterations at t = " << stage.time_new
                       << " s (residual " << residual << ", target " << target
-                      << "). Reduce 'Time step' in subsection 'Time' or raise "
-                         "'Maximum iterations' in subsection 'Nonlinear "
-                         "solver'.";
-              throw std::runtime_error(message.str());
+                      << ").";
+              throw SolverFailure(
+                SolverFailure::Kind::nonlinear,
+                message.str(),
+                "Reduce 'Time step' in subsection 'Time' or raise 'Maximum "
+                "iterations' in subsection 'Nonlinear solver'.");
             }
           // system_rhs already holds the residual of this iterate (the
           // damped update below assembled it)

@@ -441,12 +441,6 @@ namespace particulate {
       /// last Newton step of a stage)
       std::vector<unsigned int> fresh_multigrid_iterations;
       unsigned int              multigrid_reference_iterations = 0;
-      /// 'keep': wall time spent building the V-cycles of the current
-      /// geometry (the geometry and every linearisation since), and the wall
-      /// time the FGMRES iterations beyond the reference count have cost
-      /// since (net of solves that needed fewer)
-      double multigrid_build_seconds = 0.;
-      double multigrid_extra_seconds = 0.;
       /** Rebuild the V-cycle's geometry for the current vertex positions
        *  (linearised anew by the next solve). */
       void
