@@ -216,9 +216,14 @@ namespace particulate {
       prm.declare_entry("Wall-time interval",
                         "0",
                         Patterns::Double(0.),
-                        "Also save whenever this many minutes of wall-clock "
+                        "Also save once this many minutes of wall-clock "
                         "time have passed since the last save (0: never by "
-                        "wall time). Long runs that may be cut off use it.");
+                        "wall time), at the next step that is a multiple of "
+                        "10. Long runs that may be cut off use it. Those "
+                        "steps rebuild the solvers' preconditioners whether "
+                        "or not a checkpoint is written, as a restart from "
+                        "one does: the run's numbers depend neither on the "
+                        "clock nor on a restart.");
       prm.leave_subsection();
     }
 

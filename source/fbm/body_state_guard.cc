@@ -1,5 +1,6 @@
 #include <particulate/fbm/body_state_guard.h>
 #include <particulate/geometry/pose.h>
+#include <particulate/rigid/narrow_phase.h>
 
 #include <algorithm>
 #include <cmath>
@@ -77,7 +78,14 @@ namespace particulate {
       : domain(domain)
       , ids(particle_ids)
       , contact_distance(contact_distance)
-    {}
+    {
+      for (unsigned int i = 0; i < ids.size(); ++i)
+        {
+          if (ids[i] >= particle_of.size())
+            particle_of.resize(ids[i] + 1, -1);
+          particle_of[ids[i]] = i;
+        }
+    }
 
 
 
@@ -106,6 +114,7 @@ namespace particulate {
           check_walls(body, i, t, dt);
           check_inside(body, i, t);
         }
+      check_overlaps(world, t);
     }
 
 
@@ -232,6 +241,50 @@ namespace particulate {
                      "run ('End time') before the particle reaches it.";
           stop(message);
         });
+    }
+
+
+
+    void
+    BodyStateGuard::check_overlaps(const rigid::World &world,
+                                   const double        t) const
+    {
+      const auto particle = [&](const rigid::BodyId id) {
+        return id < particle_of.size() ? particle_of[id] : -1;
+      };
+      for (const rigid::ContactEdge &edge : world.contact_graph().edges())
+        {
+          const int i = particle(edge.manifold.a);
+          const int j = particle(edge.manifold.b);
+          if (i < 0 || j < 0) // walls have their own check
+            continue;
+          const rigid::RigidBody &a = world.body(edge.manifold.a);
+          const rigid::RigidBody &b = world.body(edge.manifold.b);
+          if (a.is_fixed() && b.is_fixed())
+            continue;
+          // the graph's points are those of the start of the last substep:
+          // measure where the bodies are now
+          rigid::ContactEdge now = edge;
+          rigid::NarrowPhase::collide(a, b, 0., now);
+          double overlap = 0.;
+          for (const rigid::ContactPoint &p : now.manifold.points)
+            overlap = std::max(overlap, -p.distance);
+          const double size
+            = std::min(body_size(a, domain.dim), body_size(b, domain.dim));
+          if (overlap <= max_overlap_fraction * size)
+            continue;
+          std::ostringstream message;
+          message << "Particles " << std::min(i, j) << " and " << std::max(i, j)
+                  << " overlap by " << overlap << " m at t = " << t
+                  << " s, more than " << 100. * max_overlap_fraction
+                  << " % of the smaller one's size " << size
+                  << " m: their contact failed. Their relative speed is "
+                  << (a.linear_velocity - b.linear_velocity).norm()
+                  << " m/s; the contact distance is " << contact_distance
+                  << " m. Reduce 'Time step' in subsection 'Time' or raise "
+                     "'Rigid substeps' in subsection 'Particles'.";
+          stop(message);
+        }
     }
   } // namespace fbm
 } // namespace particulate

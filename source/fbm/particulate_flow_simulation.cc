@@ -4,6 +4,7 @@
 #include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/body_state_guard.h>
+#include <particulate/fbm/energy_balance.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
 #include <particulate/fbm/particle_set_checks.h>
@@ -12,6 +13,7 @@
 #include <particulate/fbm/particulate_flow_simulation.h>
 #include <particulate/fbm/prescribed_motion.h>
 #include <particulate/fbm/rigid_body_update.h>
+#include <particulate/fbm/set_up_warnings.h>
 #include <particulate/fluid/flow_diagnostics.h>
 #include <particulate/fluid/navier_stokes.h>
 #include <particulate/fluid/run_frame.h>
@@ -22,6 +24,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
 
 #include <algorithm>
 #include <array>
@@ -33,6 +37,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace particulate {
   namespace fbm {
@@ -98,6 +103,7 @@ namespace particulate {
       std::vector<rigid::BodyId>                          ids;
       RigidBodyUpdate                                     rigid_update;
       std::unique_ptr<BodyStateGuard>                     guard;
+      std::unique_ptr<EnergyBalance>                      energy;
       std::unique_ptr<FictitiousBoundary<dim>>            interface;
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
       std::vector<BodyCouplingState>                      states;
@@ -192,6 +198,8 @@ namespace particulate {
             dt = time_p.next_time_step(dt, run_->flow->cfl_number(dt));
           if (checkpoint_due())
             write_checkpoint();
+          else if (parameters.checkpoint.wall_time_step(step))
+            run_->flow->reset_preconditioners(); // as a checkpoint would
         }
     }
 
@@ -462,6 +470,11 @@ namespace particulate {
       r.guard              = std::make_unique<BodyStateGuard>(domain,
                                                  r.ids,
                                                  world_p.contact_offset);
+      std::vector<rigid::BodyId> free_ids;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        if (particle_p.bodies[i].motion == ParticleMotion::free)
+          free_ids.push_back(r.ids[i]);
+      r.energy = std::make_unique<EnergyBalance>(free_ids);
     }
 
 
@@ -498,6 +511,68 @@ namespace particulate {
               << r.world->parameters().contact_offset
               << " m\nContainment: " << r.interface->containment_method()
               << std::endl;
+      warn_about_set_up();
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::warn_about_set_up() const
+    {
+      const Run          &r         = *run_;
+      const auto         &particles = parameters.particles;
+      const double        rho_f     = parameters.flow.fluid.properties.density;
+      std::vector<double> sizes, density_ratios;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        {
+          sizes.push_back(body_size(r.world->body(r.ids[i]), dim));
+          if (particles.bodies[i].motion == ParticleMotion::free)
+            density_ratios.push_back(particles.bodies[i].density / rho_f);
+        }
+      for (const std::string &warning :
+           {set_up_warnings::resolution(sizes, cell_sizes_at_particles()),
+            set_up_warnings::coupling_stability(
+              density_ratios,
+              particles.added_mass_coefficient,
+              dim)})
+        if (!warning.empty())
+          r.pcout << warning << std::endl;
+    }
+
+
+
+    template <int dim>
+    std::vector<double>
+    ParticulateFlowSimulation<dim>::cell_sizes_at_particles() const
+    {
+      const Run                  &r = *run_;
+      const GridTools::Cache<dim> cache(r.tria, r.flow->get_mapping());
+      std::vector<double>         h(r.ids.size(), 0.);
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        {
+          const Eigen::Vector3d &x = r.world->body(r.ids[i]).position;
+          Point<dim>             p;
+          for (unsigned int d = 0; d < dim; ++d)
+            p[d] = x[d];
+          try
+            {
+              const auto cell
+                = GridTools::find_active_cell_around_point(cache, p).first;
+              if (cell.state() == IteratorState::valid
+                  && cell->is_locally_owned())
+                h[i] = cell->minimum_vertex_distance();
+            }
+          catch (const std::exception &)
+            {
+              // not in this rank's part of the mesh
+            }
+        }
+      std::vector<double> largest(h.size());
+      Utilities::MPI::max(make_array_view(std::as_const(h)),
+                          communicator,
+                          make_array_view(largest));
+      return largest;
     }
 
 
@@ -772,7 +847,17 @@ namespace particulate {
       Run &r = *run_;
       if (parameters.particles.force_includes_fluid_inertia)
         r.step_start = r.flow->get_solution();
-      r.statistics = r.flow->advance(t, k, parameters.flow.time.scheme);
+      const StepConditions conditions = measure_step_conditions(k);
+      try
+        {
+          r.statistics = r.flow->advance(t, k, parameters.flow.time.scheme);
+        }
+      catch (const fluid::SolverFailure &failure)
+        {
+          StepConditions measured = conditions;
+          measured.smallest_cell  = smallest_cell_size();
+          throw std::runtime_error(diagnose_solver_failure(failure, measured));
+        }
       r.summary.nonlinear_iterations += r.statistics.nonlinear_iterations;
       r.summary.linear_iterations += r.statistics.linear_iterations;
     }
@@ -840,9 +925,13 @@ namespace particulate {
       {
         TimerOutput::Scope scope(r.timer, "rigid bodies");
         r.guard->start_step(*r.world);
-        r.rigid_update.advance(*r.world, r.ids, r.states, k, t + k);
+        r.rigid_update
+          .advance(*r.world, r.ids, r.states, k, t + k, r.energy.get());
         r.guard->check_step(*r.world, t + k, k);
       }
+      const std::string warning = r.energy->warning(t + k);
+      if (!warning.empty())
+        r.pcout << warning << std::endl;
       t += k;
       ++step;
       // bodies that do not move before a step are marked where it ends:
@@ -886,7 +975,7 @@ namespace particulate {
       return at_end_time()
              || (checkpoint_p.step_interval > 0
                  && step % checkpoint_p.step_interval == 0)
-             || (checkpoint_p.wall_minutes > 0.
+             || (checkpoint_p.wall_time_step(step)
                  && minutes >= checkpoint_p.wall_minutes);
     }
 
@@ -897,6 +986,52 @@ namespace particulate {
     ParticulateFlowSimulation<dim>::at_end_time() const
     {
       return run_->at_end_time(t);
+    }
+
+
+
+    template <int dim>
+    StepConditions
+    ParticulateFlowSimulation<dim>::measure_step_conditions(
+      const double k) const
+    {
+      const Run     &r = *run_;
+      StepConditions c;
+      c.time_step        = k;
+      c.cfl              = r.flow->cfl_number(k);
+      c.contact_distance = r.world->parameters().contact_offset;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        {
+          const double speed = r.world->body(r.ids[i]).linear_velocity.norm();
+          if (speed > c.fastest_speed)
+            {
+              c.fastest_speed    = speed;
+              c.fastest_particle = i;
+            }
+        }
+      for (const rigid::ContactEdge &edge : r.world->contact_graph().edges())
+        for (const rigid::ContactPoint &p : edge.manifold.points)
+          if (p.distance <= 0.)
+            {
+              ++c.n_contacts;
+              break;
+            }
+      c.deepest_overlap = r.world->max_penetration();
+      return c;
+    }
+
+
+
+    template <int dim>
+    double
+    ParticulateFlowSimulation<dim>::smallest_cell_size() const
+    {
+      double h = std::numeric_limits<double>::max();
+      for (const auto &cell :
+           run_->flow->get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          h = std::min(h, cell->minimum_vertex_distance());
+      return Utilities::MPI::min(h, communicator);
     }
 
 

@@ -130,7 +130,8 @@ namespace particulate {
                              const std::vector<rigid::BodyId> &ids,
                              std::vector<BodyCouplingState>   &states,
                              const double                      time_step,
-                             const double                      time) const
+                             const double                      time,
+                             EnergyBalance                    *balance) const
     {
       const unsigned int           n = ids.size();
       std::vector<Eigen::Vector3d> old_velocity(n), old_angular(n),
@@ -146,13 +147,21 @@ namespace particulate {
           if (free[i])
             apply_loads(world, i, ids[i], states[i]);
         }
+      if (balance)
+        balance->start_step(world);
       world.step(time_step);
+      for (unsigned int i = 0; i < n; ++i)
+        if (free[i])
+          restore_locked_axes(world.body(ids[i]),
+                              old_position[i],
+                              old_orientation[i]);
+      if (balance)
+        balance->end_step(world);
       for (unsigned int i = 0; i < n; ++i)
         {
           if (!free[i])
             continue;
           rigid::RigidBody &b = world.body(ids[i]);
-          restore_locked_axes(b, old_position[i], old_orientation[i]);
           if (!b.linear_velocity.allFinite() || !b.position.allFinite())
             throw std::runtime_error(
               "Particle " + std::to_string(i)

@@ -12,7 +12,10 @@
 //   the floor;
 // - a centre beyond a face that is not a wall stops the run ("left the
 //   domain"); on a mirror plane it does not;
-// - a fixed body is not checked.
+// - a fixed body is not checked;
+// - two spheres of radius 0.1 m in the engine's contact graph that overlap
+//   by 0.005 m (2.5 % of the size 0.2 m) pass; by 0.02 m (10 %, beyond the
+//   5 % limit) they stop the run, naming both particles.
 
 #include <particulate/fbm/body_state_guard.h>
 #include <particulate/geometry/ellipsoid.h>
@@ -177,6 +180,36 @@ main()
     guard.start_step(s.world);
     s.body().position[2] = -1.;
     expect(guard, s.world, "fixed body below the floor", "");
+  }
+  {
+    rigid::WorldParameters parameters;
+    parameters.gravity = Eigen::Vector3d::Zero();
+    rigid::World       world(parameters);
+    const unsigned int material = world.add_material(rigid::Material());
+    const auto         add      = [&](const double x) {
+      return world.add_body(sphere,
+                            material,
+                            Eigen::Vector3d(x, 0.5, 0.5),
+                            Eigen::Quaterniond::Identity(),
+                            false);
+    };
+    const rigid::BodyId a = add(0.3), b = add(0.5);
+    world.step(1e-6); // the touching pair enters the contact graph
+    fbm::BodyStateGuard guard(fbm::DomainBox{Eigen::Vector3d::Zero(),
+                                             Eigen::Vector3d::Ones(),
+                                             {},
+                                             {},
+                                             3},
+                              {a, b},
+                              0.01);
+    world.body(b).position[0] = 0.495;
+    guard.start_step(world);
+    expect(guard, world, "spheres overlapping by 0.005 m", "");
+    world.body(b).position[0] = 0.48;
+    expect(guard,
+           world,
+           "spheres overlapping by 0.02 m",
+           "Particles 0 and 1 overlap by 0.02 m");
   }
   std::cout << (failures == 0 ? "OK" : "FAILED") << std::endl;
   return failures == 0 ? 0 : 1;

@@ -22,8 +22,25 @@ namespace particulate {
       /// save every this many time steps (0: not by step count)
       unsigned int step_interval = 0;
       /// save when this many wall-clock minutes passed since the last save
-      /// (0: not by wall time)
+      /// (0: not by wall time), at the next step that is a multiple of
+      /// wall_time_step_multiple
       double wall_minutes = 0.;
+
+      /**
+       * The steps a wall-time checkpoint may fall on. A checkpoint rebuilds
+       * the solvers' preconditioners, as a restart from it must; with
+       * wall-time checkpoints these steps rebuild them whether or not one
+       * is written, so that neither the clock nor a restart changes the
+       * numbers. Every tenth step costs one rebuild in ten steps.
+       */
+      static constexpr unsigned int wall_time_step_multiple = 10;
+
+      /** Whether @p step is one a wall-time checkpoint may fall on. */
+      bool
+      wall_time_step(const unsigned long step) const
+      {
+        return wall_minutes > 0. && step % wall_time_step_multiple == 0;
+      }
 
       static void
       declare(dealii::ParameterHandler &prm);

@@ -5,6 +5,7 @@
 #include <particulate/deformation/deformation_parameters.h>
 #include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/particle_parameters.h>
+#include <particulate/fbm/solver_failure_diagnosis.h>
 #include <particulate/fluid/flow_simulation.h>
 #include <particulate/fluid/run_profile.h>
 
@@ -150,7 +151,8 @@ namespace particulate {
       void
       impose_interface(const double k);
 
-      /** Stage 3: the fluid over the step. */
+      /** Stage 3: the fluid over the step. A solve that fails stops the
+       *  run with the likely cause, named from measure_step_conditions(). */
       void
       advance_fluid(const double k);
 
@@ -255,6 +257,25 @@ namespace particulate {
        *  particle 0. */
       std::string
       leading_speed() const;
+
+      /** What the step of size @p k starts from (CFL number, the fastest
+       *  particle, contacts), for the message of a failed flow solve. */
+      StepConditions
+      measure_step_conditions(const double k) const;
+
+      /** Print the set-up warnings (particles resolved by few cells, too
+       *  light for the coupling). */
+      void
+      warn_about_set_up() const;
+
+      /** The smallest edge of the cell at each particle's centre [m] (0
+       *  where no cell holds it). */
+      std::vector<double>
+      cell_sizes_at_particles() const;
+
+      /** The smallest edge of any cell [m]. */
+      double
+      smallest_cell_size() const;
       /** The time loop: the stages of each step, the output and the
        *  checkpoints, up to 'End time'. */
       void

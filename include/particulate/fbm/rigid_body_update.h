@@ -2,6 +2,7 @@
 #define particulate_fbm_rigid_body_update_h
 
 #include <particulate/fbm/body_coupling_state.h>
+#include <particulate/fbm/energy_balance.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/rigid/world.h>
 
@@ -53,6 +54,8 @@ namespace particulate {
        * per body of @p ids) and store each free body's new accelerations
        * there. Bodies that are not free only see the engine step.
        * @param time the time the step ends at, for messages [s]
+       * @param balance if given, gets the step between the loads and the
+       *   engine's step (start_step) and after it (end_step)
        * @throw std::runtime_error if a body's state is no longer finite
        */
       void
@@ -60,7 +63,8 @@ namespace particulate {
               const std::vector<rigid::BodyId> &ids,
               std::vector<BodyCouplingState>   &states,
               const double                      time_step,
-              const double                      time) const;
+              const double                      time,
+              EnergyBalance                    *balance = nullptr) const;
 
       /** The true mass of particle @p i, whose body is @p body, rho_p V
        *  [kg] (the engine's includes the added mass, or is infinite for a

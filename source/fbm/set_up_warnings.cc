@@ -1,0 +1,85 @@
+#include <particulate/fbm/set_up_warnings.h>
+
+#include <sstream>
+
+namespace particulate {
+  namespace fbm {
+    namespace set_up_warnings {
+      std::string
+      resolution(const std::vector<double> &sizes,
+                 const std::vector<double> &cell_sizes)
+      {
+        unsigned int n_coarse = 0, worst = 0;
+        double       fewest = minimum_cells_across;
+        for (unsigned int i = 0; i < sizes.size(); ++i)
+          {
+            if (!(cell_sizes[i] > 0.))
+              continue;
+            const double across = sizes[i] / cell_sizes[i];
+            if (across >= minimum_cells_across)
+              continue;
+            ++n_coarse;
+            if (across < fewest)
+              {
+                fewest = across;
+                worst  = i;
+              }
+          }
+        if (n_coarse == 0)
+          return "";
+        std::ostringstream message;
+        message << "Warning: " << n_coarse << " of " << sizes.size()
+                << " particle(s) span fewer than " << minimum_cells_across
+                << " cells across their size; the fewest, particle " << worst
+                << ", spans " << fewest << " (size " << sizes[worst]
+                << " m, cell " << cell_sizes[worst]
+                << " m at its centre). The fictitious boundary resolves them "
+                   "coarsely: the drag of a fixed cylinder is 2.6 % low at 4 "
+                   "cells per diameter and within 1.3 % from 8 on "
+                   "(doc/fbm.md). Refine the mesh around the particles "
+                   "('Refinements' in subsection 'Mesh', or 'Mesh "
+                   "adaptation') if their forces matter.";
+        return message.str();
+      }
+
+
+
+      std::string
+      coupling_stability(const std::vector<double> &density_ratios,
+                         const double               added_mass_coefficient,
+                         const unsigned int         dim)
+      {
+        const double added_mass = dim == 2 ? 1. : 0.5;
+        const double limit      = added_mass - 2. * added_mass_coefficient;
+        unsigned int n_unstable = 0, lightest = 0;
+        for (unsigned int i = 0; i < density_ratios.size(); ++i)
+          if (density_ratios[i] < limit)
+            {
+              if (n_unstable == 0
+                  || density_ratios[i] < density_ratios[lightest])
+                lightest = i;
+              ++n_unstable;
+            }
+        if (n_unstable == 0)
+          return "";
+        std::ostringstream message;
+        message << "Warning: " << n_unstable
+                << " free particle(s) are lighter than the explicit coupling "
+                   "can carry with 'Added mass coefficient' = "
+                << added_mass_coefficient << ": the lightest has rho_p / "
+                << "rho_f = " << density_ratios[lightest]
+                << ", below C_a - 2 C = " << limit << " (C_a = " << added_mass
+                << " for a " << (dim == 2 ? "disk" : "sphere")
+                << "), where its acceleration grows from step to step. A "
+                   "disk of ratio 0.5 with C = 0 flipped its acceleration "
+                   "in every step at 10 ms and was smooth with C = 1 "
+                   "(doc/fbm.md, \"Stability for light particles\"). Set "
+                   "'Added mass coefficient' in subsection 'Particles' to "
+                   "at least "
+                << (added_mass - density_ratios[lightest]) / 2.
+                << " (the default is 1).";
+        return message.str();
+      }
+    } // namespace set_up_warnings
+  }   // namespace fbm
+} // namespace particulate
