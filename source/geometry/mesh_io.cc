@@ -185,10 +185,12 @@ namespace particulate::geometry {
           }
         return lines;
       };
+      // strtold() also reads "nan", which passes every range test below
+      // and must not reach a conversion to an integer: not a count.
       auto count = [](const std::string &t, long double &v) {
         char *end = nullptr;
         v         = std::strtold(t.c_str(), &end);
-        return end != t.c_str() && *end == '\0';
+        return end != t.c_str() && *end == '\0' && !std::isnan(v);
       };
 
       if (ext == ".off")

@@ -116,6 +116,7 @@ main(int argc, char **argv)
       for (const std::string &h : std::vector<std::string>{
              "OFF\n999999999 999999999 0\n0 0 0\n",
              "OFF\n-5 -5 0\n",
+             "OFF\nnan nan 0\n0 0 0\n",
              "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n999999999 0 1 2\n",
              "ply\nformat ascii 1.0\nelement vertex 999999999999\nproperty "
              "float x\nend_header\n",
@@ -125,6 +126,10 @@ main(int argc, char **argv)
              "property float y\nproperty float z\nelement face 1\nproperty "
              "list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
              "999999999 0 1 2\n",
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+             "property float y\nproperty float z\nelement face 1\nproperty "
+             "list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+             "nan 0 1 2\n",
              std::string("ply\nformat binary_little_endian 1.0\nelement vertex "
                          "3\nproperty float x\nproperty float y\nproperty "
                          "float z\nelement face 1\nproperty list int int "
