@@ -159,7 +159,8 @@ namespace particulate::geometry {
     // CGAL's readers trust the counts in a file: an OFF header or a PLY list
     // claiming 10^9 entries makes them allocate gigabytes before failing. So
     // before handing a file to CGAL we check that every count it declares fits
-    // in the bytes that follow. Returns an empty string if plausible, else the
+    // in the bytes that follow, and that an OFF face's vertex indices are
+    // those of vertices. Returns an empty string if plausible, else the
     // reason.
     std::string
     implausible_counts(const std::string &path, const std::string &ext)
@@ -227,6 +228,17 @@ namespace particulate::geometry {
               if (!count(lines[l][0], k) || k < 0 || k > left[l])
                 return "face line " + std::to_string(l + 1) + " declares "
                        + lines[l][0] + " vertices, more than the file holds";
+              // CGAL converts each index, read as a double, to an unsigned
+              // integer: a negative or huge one is undefined behaviour there.
+              for (std::size_t t = 1; t <= k && t < lines[l].size(); ++t)
+                {
+                  long double index = 0;
+                  if (count(lines[l][t], index) && !(index >= 0 && index < nv))
+                    return "face line " + std::to_string(l + 1)
+                           + " refers to vertex " + lines[l][t]
+                           + ", but the header declares " + head[0]
+                           + " vertices";
+                }
             }
           return "";
         }

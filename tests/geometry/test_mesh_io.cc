@@ -172,7 +172,13 @@ main()
     expect_error((tmp / "garbage.stl").string(), "no faces");
     write_text((tmp / "badindex.off").string(),
                "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
-    expect_error((tmp / "badindex.off").string(), "could not be parsed");
+    expect_error((tmp / "badindex.off").string(),
+                 "face line 6 refers to vertex 7, but the header declares 3 "
+                 "vertices");
+    // A negative index (CGAL would convert it to an unsigned integer).
+    write_text((tmp / "negindex.off").string(),
+               "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
+    expect_error((tmp / "negindex.off").string(), "refers to vertex -1");
     // A tetrahedron with a repeated vertex in one face.
     write_text((tmp / "degenerate.off").string(),
                "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
