@@ -2,8 +2,7 @@
 // then hand over to the simulation the file asks for.
 
 #include <particulate/core/input_file.h>
-#include <particulate/core/mesh.h>
-#include <particulate/fbm/particle_set_checks.h>
+#include <particulate/fbm/case_file.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
 #include <particulate/fluid/flow_simulation.h>
 
@@ -14,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -43,72 +43,6 @@ namespace {
            "  particulate --help                 this text\n\n"
            "Cases live in prm/<case>/<case>.prm; see README.md and "
            "doc/parameters.md.\n";
-  }
-
-  /**
-   * Read and check @p filename completely: names, values, and the checks
-   * that need the coarse mesh (boundary ids). Nothing is written.
-   */
-  fbm::ParticulateFlowParameters
-  read_case(dealii::ParameterHandler &prm, const std::string &filename)
-  {
-    // the particle lists the file holds are declared before it is parsed
-    const core::InputOutline outline(filename);
-    fbm::ParticulateFlowParameters::declare(prm,
-                                            fbm::ParticleSetLayout::of(
-                                              outline));
-    core::parse_input_file(prm, outline);
-    fbm::ParticulateFlowParameters all;
-    try
-      {
-        all.parse(prm, outline);
-      }
-    catch (const std::runtime_error &e)
-      {
-        // the checks of values and combinations know the entry, not the
-        // file it came from
-        const std::string message = e.what();
-        if (message.find(filename) != std::string::npos)
-          throw;
-        throw std::runtime_error(filename + ": " + message);
-      }
-    return all;
-  }
-
-  template <int dim>
-  void
-  check_case(const fbm::ParticulateFlowParameters &all,
-             const std::string                    &filename,
-             MPI_Comm                              comm)
-  {
-    const fluid::FlowCaseParameters &parameters = all.flow;
-    // expressions with the right number of components
-    parameters.fluid.properties.body_force.create<dim>(dim,
-                                                       "Fluid / Body force");
-    parameters.fluid.boundary_conditions.dirichlet_velocity
-      .create<dim>(dim, "Boundary conditions / Velocity");
-    parameters.fluid.initial_velocity
-      .create<dim>(dim, "Initial condition / Velocity");
-    // boundary ids against the coarse mesh
-    auto coarse        = parameters.mesh;
-    coarse.refinements = 0;
-    dealii::parallel::fullydistributed::Triangulation<dim> tria(comm);
-    core::create_mesh(coarse, tria);
-    parameters.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
-                                               filename);
-    // the particles inside the domain
-    const auto [lower, upper] = core::global_bounding_box(tria, comm);
-    Eigen::Vector3d low = Eigen::Vector3d::Zero(), up = Eigen::Vector3d::Zero();
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        low[d] = lower[d];
-        up[d]  = upper[d];
-      }
-    fbm::check_inside_box(all.particles.bodies,
-                          low,
-                          up,
-                          all.particles.symmetry_planes,
-                          dim);
   }
 
   template <int dim>
@@ -193,7 +127,7 @@ main(int argc, char **argv)
         }
 
       dealii::ParameterHandler       prm;
-      fbm::ParticulateFlowParameters all = read_case(prm, filename);
+      fbm::ParticulateFlowParameters all = fbm::read_case_file(prm, filename);
       all.restart                        = restart;
       if (restart
           && all.flow.simulation.type
@@ -203,10 +137,7 @@ main(int argc, char **argv)
                                    "runs; this case is a 'fluid' run.");
       const fluid::FlowCaseParameters &parameters = all.flow;
       const unsigned int               dim = parameters.simulation.dimension;
-      if (dim == 2)
-        check_case<2>(all, filename, comm);
-      else
-        check_case<3>(all, filename, comm);
+      fbm::check_case_against_mesh(all, filename, comm);
       reading_input = false;
       if (validate_only)
         {
@@ -233,6 +164,19 @@ main(int argc, char **argv)
         run_case<2>(all, filename, comm);
       else
         run_case<3>(all, filename, comm);
+    }
+  catch (const std::bad_alloc &)
+    {
+      std::cerr
+        << "\nparticulate: error: out of memory ("
+        << (reading_input ? "while the case was read and checked" :
+                            "during the run")
+        << "): a rank could not allocate what the case needs. Use a "
+           "coarser mesh or fewer particles, or fewer ranks per machine."
+        << std::endl;
+      if (!reading_input && dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+        MPI_Abort(comm, 1);
+      return 1;
     }
   catch (const std::exception &e)
     {

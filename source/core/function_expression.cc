@@ -1,3 +1,4 @@
+#include <particulate/core/deal_ii_message.h>
 #include <particulate/core/function_expression.h>
 
 #include <deal.II/base/function_parser.h>
@@ -5,11 +6,38 @@
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
+#include <iostream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 namespace particulate {
   namespace core {
+    namespace {
+      /** Discards what is written to a stream while it lives. */
+      class SilencedStream
+      {
+      public:
+        explicit SilencedStream(std::ostream &stream)
+          : stream(stream)
+          , original(stream.rdbuf(sink.rdbuf()))
+        {}
+        ~SilencedStream()
+        {
+          stream.rdbuf(original);
+        }
+        SilencedStream(const SilencedStream &) = delete;
+        SilencedStream &
+        operator=(const SilencedStream &)
+          = delete;
+
+      private:
+        std::ostringstream sink;
+        std::ostream      &stream;
+        std::streambuf    *original;
+      };
+    } // namespace
+
     void
     FunctionExpression::declare(dealii::ParameterHandler &prm,
                                 const std::string        &name,
@@ -88,6 +116,10 @@ namespace particulate {
         = std::make_unique<dealii::FunctionParser<dim>>(n_components);
       try
         {
+          // deal.II's FunctionParser prints muparser's report of a bad
+          // expression to std::cerr before it throws; the exception carries
+          // the same facts, given below with the entry's name
+          const SilencedStream quiet(std::cerr);
           function->initialize(variables,
                                components,
                                constant_map,
@@ -99,12 +131,10 @@ namespace particulate {
         }
       catch (const dealii::ExceptionBase &e)
         {
-          std::ostringstream info;
-          e.print_info(info);
-          throw std::runtime_error("Cannot evaluate the entry '" + entry_name
-                                   + "' = '" + expression + "': " + info.str()
-                                   + "Use the variables " + variables
-                                   + " and the constants you declare.");
+          throw std::runtime_error(
+            "Cannot evaluate the entry '" + entry_name + "' = '" + expression
+            + "': " + one_line_explanation(e) + " Use the variables "
+            + variables + " and the constants you declare.");
         }
       return function;
     }

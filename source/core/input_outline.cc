@@ -1,5 +1,6 @@
 #include <particulate/core/input_outline.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -47,6 +48,34 @@ namespace particulate {
                                  + message);
       }
 
+      /**
+       * The position of the first byte of @p s that is no text: a control
+       * character other than a tab or a carriage return, or a byte outside a
+       * well-formed UTF-8 sequence; npos if there is none.
+       */
+      std::size_t
+      first_byte_not_text(const std::string &s)
+      {
+        for (std::size_t i = 0; i < s.size();)
+          {
+            const auto   c      = static_cast<unsigned char>(s[i]);
+            unsigned int length = c < 0x80                      ? 1 :
+                                  (c >> 5) == 0x6 && c >= 0xc2  ? 2 :
+                                  (c >> 4) == 0xe               ? 3 :
+                                  (c >> 3) == 0x1e && c <= 0xf4 ? 4 :
+                                                                  0;
+            if (length == 0
+                || (length == 1 && c < 0x20 && c != '\t' && c != '\r')
+                || c == 0x7f || i + length > s.size())
+              return i;
+            for (unsigned int k = 1; k < length; ++k)
+              if ((static_cast<unsigned char>(s[i + k]) >> 6) != 0x2)
+                return i;
+            i += length;
+          }
+        return std::string::npos;
+      }
+
       std::string
       key(const std::vector<std::string> &path, const std::string &entry)
       {
@@ -88,6 +117,22 @@ namespace particulate {
           const auto hash = raw.find('#');
           if (hash != std::string::npos)
             raw.erase(hash);
+          if (const auto bad = first_byte_not_text(raw);
+              bad != std::string::npos)
+            {
+              char code[8];
+              std::snprintf(code,
+                            sizeof(code),
+                            "0x%02X",
+                            static_cast<unsigned char>(raw[bad]));
+              fail(filename,
+                   line_number,
+                   std::string("byte ") + code + " at column "
+                     + std::to_string(bad + 1)
+                     + " is not text (a control character or no UTF-8). "
+                       "A case file is plain text: retype the line in an "
+                       "editor.");
+            }
           raw = trim(raw);
           if (!raw.empty() && raw.back() == '\\')
             {

@@ -89,11 +89,27 @@ namespace particulate {
                      const double           angle,
                      const std::string     &where)
       {
-        if (!(axis.norm() > 0.))
+        // scaled by its largest component first: the norm of an axis such
+        // as (1e200, 0, 0) overflows
+        const double largest = axis.cwiseAbs().maxCoeff();
+        if (!(largest > 0.))
           fail_at(where, "the rotation axis must not be zero.");
         if (angle == 0.)
           return Eigen::Quaterniond::Identity();
-        return Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis.normalized()));
+        return Eigen::Quaterniond(
+          Eigen::AngleAxisd(angle, (axis / largest).normalized()));
+      }
+
+      /** The rotation of quaternion (w, x, y, z), normalised without
+       *  overflow; a zero quaternion is refused. */
+      inline Eigen::Quaterniond
+      unit_quaternion(const Eigen::Vector4d &wxyz, const std::string &where)
+      {
+        const double largest = wxyz.cwiseAbs().maxCoeff();
+        if (!(largest > 0.))
+          fail_at(where, "a rotation quaternion must not be zero.");
+        const Eigen::Vector4d q = (wxyz / largest).normalized();
+        return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
       }
 
       /** A quaternion w, x, y, z, normalised (it must not be zero). */
@@ -101,10 +117,7 @@ namespace particulate {
       read_quaternion(const std::string &text, const std::string &where)
       {
         const std::vector<double> q = read_numbers(text, 4, where);
-        Eigen::Quaterniond        r(q[0], q[1], q[2], q[3]);
-        if (!(r.norm() > 0.))
-          fail_at(where, "a rotation quaternion must not be zero.");
-        return r.normalized();
+        return unit_quaternion(Eigen::Vector4d(q[0], q[1], q[2], q[3]), where);
       }
     } // namespace internal
   }   // namespace fbm

@@ -141,13 +141,12 @@ namespace particulate {
             p.angular_velocity[d] = value(std::string("omega_") + axes[d], 0.);
         if (column.count("qw"))
           {
-            Eigen::Quaterniond q(value("qw", 1.),
-                                 value("qx", 0.),
-                                 value("qy", 0.),
-                                 value("qz", 0.));
-            if (!(q.norm() > 0.))
-              internal::fail_at(where, "the quaternion must not be zero.");
-            p.orientation = q.normalized();
+            p.orientation
+              = internal::unit_quaternion(Eigen::Vector4d(value("qw", 1.),
+                                                          value("qx", 0.),
+                                                          value("qy", 0.),
+                                                          value("qz", 0.)),
+                                          where);
           }
         else if (column.count("angle"))
           p.orientation

@@ -1,4 +1,5 @@
 #include <particulate/core/input_file.h>
+#include <particulate/fbm/case_file.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -79,18 +80,8 @@ namespace particulate {
     read_particulate_flow_case(const std::string &filename,
                                const std::string &overrides)
     {
-      const core::InputOutline outline(filename);
       dealii::ParameterHandler prm;
-      ParticulateFlowParameters::declare(prm, ParticleSetLayout::of(outline));
-      core::parse_input_file(prm, outline);
-      if (!overrides.empty())
-        {
-          std::istringstream stream(overrides);
-          prm.parse_input(stream, filename + " (overrides)");
-        }
-      ParticulateFlowParameters parameters;
-      parameters.parse(prm, outline);
-      return parameters;
+      return read_case_file(prm, filename, overrides);
     }
   } // namespace fbm
 } // namespace particulate
