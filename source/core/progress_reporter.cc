@@ -26,7 +26,8 @@ namespace particulate {
     ProgressReporter::report(const unsigned int step,
                              const double       time,
                              const double       time_step,
-                             const std::string &solver_counts)
+                             const std::string &solver_counts,
+                             const double       resident_mib)
     {
       const double wall = elapsed_seconds();
       const double done = time - start_time;
@@ -42,7 +43,11 @@ namespace particulate {
                     solver_counts.c_str(),
                     format_duration(wall).c_str(),
                     format_duration(left).c_str());
-      out << line << std::endl;
+      out << line;
+      if (resident_mib >= 0.)
+        out << "  memory " << static_cast<long>(std::lround(resident_mib))
+            << " MiB";
+      out << std::endl;
     }
 
     std::string

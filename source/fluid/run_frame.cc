@@ -2,6 +2,7 @@
 #include <particulate/fluid/run_frame.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -77,6 +78,12 @@ namespace particulate {
                                const SolveStatistics &s,
                                const std::string     &more) const
     {
+      // the largest rank's resident set: a run whose memory grows step by
+      // step shows it here
+      dealii::Utilities::System::MemoryStats memory;
+      dealii::Utilities::System::get_memory_stats(memory);
+      const double resident_mib
+        = dealii::Utilities::MPI::max(memory.VmRSS / 1024., communicator);
       if (!pcout.is_active())
         return;
       char buffer[96];
@@ -86,7 +93,7 @@ namespace particulate {
                     s.nonlinear_iterations,
                     s.used_fixed_point ? "*" : " ",
                     s.linear_iterations);
-      progress->report(step, time, time_step, buffer + more);
+      progress->report(step, time, time_step, buffer + more, resident_mib);
     }
 
 

@@ -9,8 +9,10 @@ namespace particulate {
   namespace core {
     /**
      * One line per time step: step, time, dt, the solver's own counts (as a
-     * preformatted string), wall time so far and an estimate of the time
-     * left from the average cost per unit of simulated time.
+     * preformatted string), wall time so far, an estimate of the time
+     * left from the average cost per unit of simulated time, and the
+     * resident memory (of the largest rank) where @p resident_mib is not
+     * negative.
      */
     class ProgressReporter
     {
@@ -23,7 +25,8 @@ namespace particulate {
       report(const unsigned int step,
              const double       time,
              const double       time_step,
-             const std::string &solver_counts);
+             const std::string &solver_counts,
+             const double       resident_mib = -1.);
 
       /** Wall-clock seconds since construction. */
       double

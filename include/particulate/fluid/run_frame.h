@@ -56,8 +56,8 @@ namespace particulate {
       void
       start_progress(const double start);
 
-      /** Report step @p step (rank 0 only) with the solver's counts
-       *  and @p more. */
+      /** Report step @p step (printed by rank 0) with the solver's counts,
+       *  @p more and the resident memory; collective. */
       void
       report_step(const unsigned int     step,
                   const double           time,

@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""Soak run: a coupled 3D case for 2 000 steps, with a checkpoint every 100
+steps and ParaView output every 50, and the resident memory of the largest
+rank recorded every 100 steps from the progress lines. The memory must stay
+flat: after step 100 it may not grow by more than 2 %.
+
+    scripts/validation/soak.py [--binary build/particulate] [--ranks 2]
+                               [--steps 2000] [--output output/soak]
+                               [--series doc/validation/soak/memory.dat]
+                               [--figure doc/validation/soak/memory.png]
+                               [--replot]
+
+The case is prm/oscillating-cylinder/slab-3d-laplace-alpha.prm (a cylinder
+moved back and forth through a 3D channel, the mesh around it carried along
+by Laplace-alpha, geometric multigrid rebuilt as the mesh moves) at
+Refinements = 1, with 'Step interval = 100' and 'Interval = 50'; the file
+actually run is written to the output folder. --replot only redraws the
+figure from the series. Exits with 1 when the growth exceeds 2 %.
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+CASE = "prm/oscillating-cylinder/slab-3d-laplace-alpha.prm"
+PROGRESS = re.compile(r"^step\s+(\d+)\s.*\smemory (\d+) MiB")
+
+
+def soak_case(text, steps, output):
+    """The shipped case with the soak's resolution, length and intervals."""
+    time_step = float(re.search(r"set Time step\s*=\s*(\S+)", text).group(1))
+    replacements = [
+        (r"(set Refinements\s*=\s*)\S+", r"\g<1>1"),
+        (r"(set End time\s*=\s*)\S+", r"\g<1>%g" % (steps * time_step)),
+        (r"(subsection Output\n(?:.*\n)*?\s*set Interval\s*=\s*)\S+",
+         r"\g<1>50"),
+        (r"(set Directory\s*=\s*)\S+", r"\g<1>" + output),
+        (r"set Wall-time interval\s*=\s*\S+", "set Step interval = 100"),
+    ]
+    for pattern, replacement in replacements:
+        text, n = re.subn(pattern, replacement, text, count=1)
+        if n != 1:
+            sys.exit("soak: '%s' not found in %s" % (pattern, CASE))
+    return text
+
+
+def run(args):
+    os.makedirs(args.output, exist_ok=True)
+    case = os.path.join(args.output, "soak.prm")
+    with open(CASE) as f:
+        text = soak_case(f.read(), args.steps, os.path.abspath(args.output))
+    with open(case, "w") as f:
+        f.write(text)
+    command = ["mpirun", "-np", str(args.ranks), args.binary, case]
+    memory = []
+    with open(os.path.join(args.output, "soak.log"), "w") as log:
+        process = subprocess.Popen(command, stdout=subprocess.PIPE,
+                                   stderr=subprocess.STDOUT, text=True)
+        for line in process.stdout:
+            log.write(line)
+            m = PROGRESS.match(line)
+            if m and int(m.group(1)) % 100 == 0:
+                memory.append((int(m.group(1)), int(m.group(2))))
+                print("step %5d  memory %d MiB" % memory[-1], flush=True)
+        if process.wait() != 0:
+            sys.exit("soak: the run failed; see %s" % log.name)
+    os.makedirs(os.path.dirname(args.series), exist_ok=True)
+    with open(args.series, "w") as f:
+        f.write("# soak run: %s at Refinements = 1, %d ranks; resident "
+                "memory of the largest rank\n# step memory_MiB\n"
+                % (CASE, args.ranks))
+        for step, mib in memory:
+            f.write("%d %d\n" % (step, mib))
+
+
+def read_series(path):
+    rows = [line.split() for line in open(path) if not line.startswith("#")]
+    return [(int(s), int(m)) for s, m in rows]
+
+
+def plot(series, figure):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    steps, mib = zip(*series)
+    fig, ax = plt.subplots(figsize=(6, 3.2))
+    ax.plot(steps, mib, "o-", ms=3)
+    ax.set_xlabel("time step")
+    ax.set_ylabel("resident memory, largest rank [MiB]")
+    ax.set_ylim(0, 1.15 * max(mib))
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(figure, dpi=120)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--binary", default="build/particulate")
+    parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--steps", type=int, default=2000)
+    parser.add_argument("--output", default="output/soak")
+    parser.add_argument("--series", default="doc/validation/soak/memory.dat")
+    parser.add_argument("--figure", default="doc/validation/soak/memory.png")
+    parser.add_argument("--replot", action="store_true")
+    args = parser.parse_args()
+    if not args.replot:
+        run(args)
+    series = read_series(args.series)
+    plot(series, args.figure)
+    after = [mib for step, mib in series if step >= 100]
+    growth = (max(after) - after[0]) / after[0]
+    print("soak: %d MiB at step %d, at most %d MiB after it: growth %.2f %%"
+          % (after[0], 100, max(after), 100 * growth))
+    return 0 if growth <= 0.02 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
