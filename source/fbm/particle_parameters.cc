@@ -107,11 +107,9 @@ namespace particulate {
                         "dt/2 (omega_n + dt/2 alpha_n); the hydrodynamic "
                         "torque is taken about that point too. 'start': at "
                         "X_n, so the fluid sees the particle half a step "
-                        "behind on "
-                        "average (first order in time). The default changes "
-                        "a light disk's velocity 19 times less between "
-                        "dt = 10 ms and 0.25 ms than 'start' with "
-                        "'current' (doc/fbm.md, added-mass study).");
+                        "behind on average (first order in time); kept to "
+                        "study the coupling (doc/fbm.md, added-mass "
+                        "study).");
       prm.declare_entry(
         "Force integral",
         "stress",
@@ -185,10 +183,8 @@ namespace particulate {
         "sees a body shrunk to its innermost nodes. nearest: also the nodes "
         "outside by less than half the local node spacing (a quarter of the "
         "shortest edge of the cells around the node); the flow sees a body "
-        "enlarged by up to that. The two bracket the body: creeping flow "
-        "past a sphere at 2.7 cells per diameter gives drags 7.7 % below "
-        "(inside) and 7.3 % above (nearest) the closed form (doc/fbm.md, "
-        "'Which nodes'). halfway: the nodes outside by less than a quarter "
+        "enlarged by up to that. The two bracket the body's drag from below "
+        "and above on coarse meshes (doc/fbm.md, 'Which nodes'). halfway: the nodes outside by less than a quarter "
         "of the local node spacing, half the reach of nearest. The "
         "cuda containment backend supports 'inside' only.");
       prm.leave_subsection();

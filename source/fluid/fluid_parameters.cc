@@ -258,13 +258,12 @@ namespace particulate {
           "automatic|Cahouet-Chabard|least-squares commutator"),
         "Cahouet-Chabard: theta mu M_p^-1 + rho/k L_p^-1, cheap and robust "
         "for time-dependent flow at any time step; for steady flow it is "
-        "the pressure mass matrix mu M_p^-1 alone, with iterations "
-        "independent of the mesh (DFG 2D-1: +9 % per level) but many of "
-        "them (360-470 per Newton step). least-squares commutator (LSC): "
-        "L_p^-1 B D^-1 A D^-1 B^T L_p^-1 with D the lumped velocity mass; "
-        "captures convection, so steady solves need far fewer iterations "
-        "(20-80 per Newton step on DFG 2D-1) but their number grows with "
-        "the mesh level (+40-70 % per level). automatic: LSC for 'Scheme = "
+        "the pressure mass matrix mu M_p^-1 alone, whose iterations hardly "
+        "grow with the mesh level but are many. least-squares commutator "
+        "(LSC): L_p^-1 B D^-1 A D^-1 B^T L_p^-1 with D the lumped velocity "
+        "mass; it captures convection, so steady solves need far fewer "
+        "iterations, though more on each finer level (doc/performance.md). "
+        "automatic: LSC for 'Scheme = "
         "steady', Cahouet-Chabard otherwise.");
       prm.declare_entry(
         "Pressure Poisson solver",
@@ -275,8 +274,7 @@ namespace particulate {
         "by an AMG V-cycle, to 'Pressure Poisson tolerance'. V-cycle: the "
         "AMG V-cycle alone, once (a fixed linear operator, no inner "
         "iteration): each application is cheaper, FGMRES may need more "
-        "iterations (doc/performance.md, 'Pressure Laplacian: inner "
-        "tolerance'). The least-squares commutator always uses CG.");
+        "iterations. The least-squares commutator always uses CG.");
       prm.declare_entry(
         "Pressure Poisson tolerance",
         "automatic",
@@ -284,28 +282,22 @@ namespace particulate {
         "Relative tolerance of the inner CG+AMG solves with the pressure "
         "Laplacian L_p inside the Schur complement approximation ('Pressure "
         "Poisson solver = CG'): a positive number, or automatic: 0.3 with "
-        "Cahouet-Chabard, 1e-2 with the least-squares commutator. FGMRES "
-        "tolerates loose inner solves: with Cahouet-Chabard on the 3D DFG "
-        "channel at level 2 (818 640 DoFs) 0.3 takes 6.5 CG iterations per "
-        "solve instead of 17.9 and 89 FGMRES iterations per step instead of "
-        "80, and the step 15.3 s instead of 28.4 s; on ten Cate E4 at level "
-        "2 the Schur solves 0.76 s per step instead of 2.62 s. The least-"
-        "squares commutator applies L_p^-1 twice and needs the tighter "
-        "solves (steady DFG 2D-1: 260 FGMRES iterations with 0.3, 163 with "
-        "1e-2). doc/performance.md, 'Pressure Laplacian: inner tolerance'.");
+        "Cahouet-Chabard, 1e-2 with the least-squares commutator. The outer "
+        "FGMRES tolerates loose inner solves with Cahouet-Chabard; the "
+        "least-squares commutator applies L_p^-1 twice and needs the "
+        "tighter ones. Change it only to study the solver "
+        "(doc/performance.md).");
       prm.declare_entry(
         "Pressure Laplacian smoother",
         "ILU",
         Patterns::Selection("ILU|Chebyshev"),
         "Smoother on every level of the ML V-cycle that preconditions the "
         "inner CG with the pressure Laplacian L_p. ILU: one ILU(0) sweep "
-        "before and after the coarse correction; on the ten Cate boxes 4-6 "
-        "CG iterations per solve instead of 15-24, Schur solves 2.6-3.4 "
-        "times cheaper. Chebyshev: ML's Jacobi-Chebyshev, two sweeps; "
-        "cheaper to set up, and the faster choice on the 3D DFG channel at "
-        "level 2 (Schur solves 37.9 s against 69.9 s per step of "
-        "fractional-step theta; doc/performance.md, 'Pressure Laplacian: "
-        "the AMG smoother').");
+        "before and after the coarse correction; few CG iterations per "
+        "solve, the better choice on graded and stretched meshes such as "
+        "the ten Cate boxes. Chebyshev: ML's Jacobi-Chebyshev, two sweeps; "
+        "cheaper to set up, the better choice on uniform meshes of many "
+        "cells such as the 3D DFG channel (doc/performance.md).");
       prm.declare_entry(
         "Velocity preconditioner",
         "AMG",
