@@ -687,31 +687,23 @@ namespace particulate {
           mass_ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
           mass_ilu->initialize(pressure_mass.block(1, 1));
         }
-      // A new V-cycle for every new L_p (the old one went above). Two
-      // ways to save its set-up did not pay at ten Cate level 2 (issue 8
-      // item 12 in doc/performance.md): recomputing it on its aggregates
-      // (PreconditionAMG::reinit) cost as much as a new build (0.95 s
-      // against 0.84 s; the ILU factorisations and Galerkin products
-      // dominate, not the aggregation), and keeping the old V-cycle for
-      // the updated L_p tripled the CG iterations (6.3 -> 18.7 per solve):
-      // a pressure freed by the body was an isolated row in the old one.
-      // Near-null space for ML. L_p's null space is the constant pressure,
-      // i.e. the constant mode's DoF of every cell (1) and none of the
-      // linear modes (0); its near-null space also holds the linear
-      // pressures (pressure_near_null_space()), which are given where the
-      // cells are blocks (below). The constant alone as 0/1 vectors: an
-      // aggregate of linear-mode DoFs only (left where
-      // a cut cell's constant mode is decoupled, see
-      // decoupled_pressure_dofs) has a zero null space, its tentative
-      // prolongator is singular and the V-cycle returns NaN (ten Cate E4
-      // full box, nearest marking, t = 0.445 s). So the aggregation works
-      // on cells: ML's "PDE equations" = dim + 1 blocks the dim + 1
-      // pressure DoFs of a cell, which the numbering keeps consecutive
-      // (checked here), and every aggregate holds a constant mode.
-      // Where the numbering does not, one 0/1 vector per mode is the
-      // fall-back; its coarse levels are dim + 1 times larger (with it the
-      // Schur complement solves took twice as long on the 3D channel and
-      // ten Cate E4, doc/performance.md).
+      // A new V-cycle for every new L_p. Re-using the old aggregates
+      // (PreconditionAMG::reinit) saves little, since the ILU smoothers and
+      // Galerkin products dominate the set-up; keeping the old V-cycle for
+      // the updated L_p fails where a body frees a pressure, which was an
+      // isolated row in the old operator (doc/performance.md).
+      // Near-null space for ML: L_p's null space is the constant pressure,
+      // the constant-mode DoF of every cell; its near-null space also holds
+      // the linear pressures (pressure_near_null_space()). An aggregate of
+      // linear-mode DoFs alone (where a cut cell's constant mode is
+      // decoupled, see decoupled_pressure_dofs) would have a zero null
+      // space, a singular tentative prolongator and a V-cycle that returns
+      // NaN. So the aggregation works on cells: ML's "PDE equations" =
+      // dim + 1 blocks the dim + 1 pressure DoFs of a cell, which the
+      // numbering keeps consecutive (checked here), and every aggregate
+      // holds a constant mode. Where the numbering does not, one 0/1
+      // vector per mode is the fall-back, with coarse levels dim + 1 times
+      // larger.
       const IndexSet                &owned_pressures = owned_partitioning[1];
       const types::global_dof_index  n_owned = owned_pressures.n_elements();
       std::vector<std::vector<bool>> pressure_modes(dim + 1,

@@ -519,13 +519,12 @@ namespace particulate {
     namespace {
       /*
        * The error reduction asked of the coarse Chebyshev polynomial, and
-       * the largest degree that 'automatic' accepts. On the ten Cate E4
-       * quarter box (bench_coupled_step, level 1, Crank-Nicolson, dt = 1
-       * ms; doc/performance.md, "What it takes to reach 35 us", item 0)
-       * reductions 0.3, 0.1 and 0.01 gave degrees 4, 6 and 10 and the same
-       * 6.3 FGMRES iterations per step as CG + AMG to 1e-3; one CG + AMG
-       * solve there costs about 40 matrix-free products on the coarse
-       * level, so a polynomial of degree up to 30 is still the cheaper one.
+       * the largest degree that 'automatic' accepts. A looser reduction
+       * leaves the outer FGMRES iterations unchanged as long as the
+       * polynomial damps the smooth error by an order of magnitude; one
+       * CG + AMG coarse solve costs tens of matrix-free products, so a
+       * polynomial of degree up to 30 is still the cheaper one
+       * (doc/performance.md).
        */
       constexpr double       coarse_chebyshev_reduction  = 0.1;
       constexpr unsigned int max_coarse_chebyshev_degree = 30;

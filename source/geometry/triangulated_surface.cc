@@ -42,8 +42,8 @@ namespace particulate::geometry {
     // closest point as lying on a face, an edge or a vertex, which inexact
     // closest-point constructions get wrong near edges shared by nearly
     // coplanar or very thin features (seen on elephant.off: grid signs that
-    // changed with the compiler's optimisation level). The exact test costs
-    // 0.2-2 us against 10-60 us for the distance itself.
+    // changed with the compiler's optimisation level). The exact test is
+    // cheap beside the distance query itself.
     double
     signed_from(const Eigen::Vector3d &p,
                 const Eigen::Vector3d &closest,
