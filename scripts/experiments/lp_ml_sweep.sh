@@ -7,7 +7,8 @@
 #   cmake --build build --target bench_coupled_step
 #   scripts/experiments/lp_ml_sweep.sh 1          # level (2: STEPS=3)
 # (and 'git apply -R' the patch afterwards). The settings are ML's on top of
-# the code's own; the rows "until now" were the code before commit 7473126.
+# the code's own; the Jacobi-Chebyshev degree-2 row (type=Chebyshev, sweeps=2)
+# is what 'Pressure Laplacian smoother = Chebyshev' gives.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 level="${1:-1}"

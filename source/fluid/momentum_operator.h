@@ -31,7 +31,7 @@ namespace particulate {
      * assembled block (0,0) as the outer FGMRES operator: the matrix costs
      * a full assembly per Newton step and 2 kB per DoF in 3D, the operator a
      * cell loop per product with sum factorisation (thesis eq. 5.14-5.16;
-     * doc/performance.md, plan item 1).
+     * doc/performance.md, "Flow solver alone").
      *
      * Constrained rows (Dirichlet boundaries, free-slip planes, the nodes
      * inside fictitious-boundary bodies) act as the identity and their

@@ -770,7 +770,7 @@ namespace particulate {
           // the constant and the linear pressures: with the constant
           // alone the inner CG needed 6.5 iterations per L_p solve on the
           // 3D channel at level 2, with both 4.6 (doc/performance.md,
-          // "The assembled path under 200 µs")
+          // "Pressure Laplacian: near-null space and updates")
           if (laplace_near_null_space.empty())
             laplace_near_null_space
               = pressure_near_null_space(mapping,

@@ -29,7 +29,7 @@ namespace particulate {
      * so that the block's entries stay in registers instead of being
      * loaded and stored once per quadrature point (the outer-product form
      * this replaces was bound by those loads and stores; doc/performance.md,
-     * "The assembled path under 200 µs").
+     * "Assembling the Jacobian").
      */
     template <int dim>
     class VelocityJacobianKernel

@@ -14,7 +14,9 @@
 //    the axis) were covered or not by the sign of a rounding error: with
 //    the caps the run finished with an axial force 130 times the drag,
 //    without them its first step took 70 s instead of 3 s and the second
-//    did not finish in 2 minutes (doc/deformation.md, "3D slab").
+//    did not finish in 2 minutes (doc/history/fbm-and-deformation.md,
+//    "3D slab, what stalls it"; the open problem: doc/deformation.md,
+//    "Open questions").
 
 #include <particulate/core/mesh.h>
 #include <particulate/fbm/body_adapted_mesh.h>

@@ -26,7 +26,7 @@ namespace particulate {
      * column of every row from its global index through a hash table and
      * then finds it in the row by binary search; for the 81 x 81 velocity
      * block of a Q2 hexahedron that was as costly as computing the entries
-     * (doc/performance.md, "Inserting the Jacobian"). Here each column is
+     * (doc/performance.md, "Assembling the Jacobian"). Here each column is
      * translated once per cell and sorted, and every locally owned row of
      * the cell is merged with the matrix's sorted row in one pass, adding
      * through Epetra's row view.
