@@ -1,4 +1,5 @@
 #include <particulate/core/checkpoint.h>
+#include <particulate/core/parameter_text.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -201,11 +202,12 @@ namespace particulate {
     void
     CheckpointParameters::declare(dealii::ParameterHandler &prm)
     {
+      const CheckpointParameters defaults;
       namespace Patterns = dealii::Patterns;
       prm.enter_subsection("Checkpoint");
       prm.declare_entry(
         "Step interval",
-        "0",
+        std::to_string(defaults.step_interval),
         Patterns::Integer(0),
         "Save the whole state of a particulate flow run (fluid solution, "
         "bodies, contact cache, output series) into "
@@ -214,7 +216,7 @@ namespace particulate {
         "on the same number of MPI ranks, exactly as the uninterrupted run "
         "would have continued.");
       prm.declare_entry("Wall-time interval",
-                        "0",
+                        number_text(defaults.wall_minutes),
                         Patterns::Double(0.),
                         "Also save once this many minutes of wall-clock "
                         "time have passed since the last save (0: never by "

@@ -1,5 +1,6 @@
 #include <particulate/core/input_file.h>
 #include <particulate/core/mesh.h>
+#include <particulate/core/parameter_text.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
@@ -23,6 +24,7 @@ namespace particulate {
     void
     MeshParameters::declare(ParameterHandler &prm)
     {
+      const MeshParameters defaults;
       prm.enter_subsection("Mesh");
       prm.declare_entry(
         "Type",
@@ -46,7 +48,7 @@ namespace particulate {
                         "(.inp). A relative path is taken from the folder of "
                         "the .prm file.");
       prm.declare_entry("Refinements",
-                        "2",
+                        std::to_string(defaults.refinements),
                         Patterns::Integer(0, 12),
                         "Number of global refinements of the coarse mesh.");
       prm.declare_entry("Lower corner",
@@ -73,33 +75,33 @@ namespace particulate {
                         "Graded rectangle: upper corner of the fine region "
                         "[m].");
       prm.declare_entry("Fine cell size",
-                        "0.1",
+                        number_text(defaults.fine_cell_size),
                         Patterns::Double(0.),
                         "Graded rectangle: edge length of the coarse cells "
                         "inside the fine region [m] (before 'Refinements').");
       prm.declare_entry("Grading ratio",
-                        "1.2",
+                        number_text(defaults.grading_ratio),
                         Patterns::Double(1.),
                         "Graded rectangle: size ratio of neighbouring cells "
                         "outside the fine region (1: uniform cells of the "
                         "fine size everywhere).");
       prm.declare_entry("Cylinder shell width",
-                        "0.03",
+                        number_text(defaults.cylinder_shell_width),
                         Patterns::Double(0.),
                         "Channel with cylinder: width of the layer of "
                         "concentric shells around the cylinder [m].");
       prm.declare_entry("Cylinder shells",
-                        "2",
+                        std::to_string(defaults.cylinder_shells),
                         Patterns::Integer(1),
                         "Channel with cylinder: number of shells.");
       prm.declare_entry("Cylinder center x",
-                        "0.2",
+                        number_text(defaults.cylinder_center_x),
                         Patterns::Double(0.12),
                         "Channel with cylinder: x of the cylinder axis [m] "
                         "(0.2 for DFG 2D, 0.5 for DFG 3D-1Z). The mesh is "
                         "stretched upstream of the cylinder to place it.");
       prm.declare_entry("Channel length",
-                        "2.2",
+                        number_text(defaults.channel_length),
                         Patterns::Double(0.5),
                         "Channel with cylinder: length of the channel [m] "
                         "(2.2 for DFG 2D, 2.5 for DFG 3D-1Z).");

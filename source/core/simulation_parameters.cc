@@ -1,4 +1,5 @@
 #include <particulate/core/input_file.h>
+#include <particulate/core/parameter_text.h>
 #include <particulate/core/simulation_parameters.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@ namespace particulate {
     void
     SimulationParameters::declare(ParameterHandler &prm)
     {
+      const SimulationParameters defaults;
       prm.enter_subsection("Simulation");
       prm.declare_entry("Type",
                         "fluid",
@@ -21,7 +23,7 @@ namespace particulate {
                         "'Particles') in the fluid by the fictitious boundary "
                         "method.");
       prm.declare_entry("Dimension",
-                        "2",
+                        std::to_string(defaults.dimension),
                         Patterns::Integer(2, 3),
                         "Space dimension of the run (2 or 3).");
       prm.leave_subsection();
@@ -53,6 +55,7 @@ namespace particulate {
     void
     TimeParameters::declare(ParameterHandler &prm)
     {
+      const TimeParameters defaults;
       prm.enter_subsection("Time");
       prm.declare_entry(
         "Scheme",
@@ -64,30 +67,30 @@ namespace particulate {
         "without damping; 'backward Euler' is first order and strongly "
         "damping; 'steady' solves the stationary equations once.");
       prm.declare_entry("Time step",
-                        "0.01",
+                        number_text(defaults.time_step),
                         Patterns::Double(0.),
                         "Macro time step [s]. With fractional-step theta "
                         "one step is three substeps.");
       prm.declare_entry("End time",
-                        "1",
+                        number_text(defaults.end_time),
                         Patterns::Double(0.),
                         "Physical time at which the run stops [s].");
       prm.declare_entry("Adaptive time step",
-                        "false",
+                        flag_text(defaults.adaptive),
                         Patterns::Bool(),
                         "Choose the step from the CFL number after each step "
                         "(bounded by the minimum and maximum time step).");
       prm.declare_entry("CFL number",
-                        "1",
+                        number_text(defaults.cfl_target),
                         Patterns::Double(0.),
                         "Target CFL number max(|u| dt / h) for the adaptive "
                         "time step [-].");
       prm.declare_entry("Minimum time step",
-                        "1e-6",
+                        number_text(defaults.minimum_time_step),
                         Patterns::Double(0.),
                         "Lower bound of the adaptive time step [s].");
       prm.declare_entry("Maximum time step",
-                        "1",
+                        number_text(defaults.maximum_time_step),
                         Patterns::Double(0.),
                         "Upper bound of the adaptive time step [s].");
       prm.leave_subsection();
@@ -118,20 +121,21 @@ namespace particulate {
     void
     OutputParameters::declare(ParameterHandler &prm)
     {
+      const OutputParameters defaults;
       prm.enter_subsection("Output");
       prm.declare_entry("Directory",
-                        "output",
+                        defaults.directory,
                         Patterns::DirectoryName(),
                         "Folder for all results (created if missing). A "
                         "relative path is taken from the current directory.");
       prm.declare_entry("Interval",
-                        "1",
+                        std::to_string(defaults.interval),
                         Patterns::Integer(0),
                         "Write ParaView files every this many time steps (0: "
                         "only the last step). Time series (.dat) are written "
                         "every step.");
       prm.declare_entry("Write ParaView files",
-                        "true",
+                        flag_text(defaults.write_vtu),
                         Patterns::Bool(),
                         "Write .vtu/.pvtu/.pvd files of the flow field.");
       prm.leave_subsection();

@@ -1,3 +1,4 @@
+#include <particulate/core/parameter_text.h>
 #include <particulate/deformation/deformation_parameters.h>
 
 #include <deal.II/base/utilities.h>
@@ -6,13 +7,55 @@ namespace particulate {
   namespace deformation {
     using namespace dealii;
 
+    namespace {
+      std::string
+      name_of(const DeformationParameters::Method method)
+      {
+        using Method = DeformationParameters::Method;
+        switch (method)
+          {
+            case Method::laplace_kappa:
+              return "laplace-kappa";
+            case Method::laplace_alpha:
+              return "laplace-alpha";
+            case Method::pde_basic:
+              return "pde-basic";
+            case Method::pde_robust:
+              return "pde-robust";
+            case Method::none:
+              break;
+          }
+        return "none";
+      }
+
+      std::string
+      name_of(const DeformationParameters::Following following)
+      {
+        using Following = DeformationParameters::Following;
+        switch (following)
+          {
+            case Following::carry_surface:
+              return "carry surface vertices";
+            case Following::carry_neighbourhood:
+              return "carry neighbourhood";
+            case Following::readapt:
+              break;
+          }
+        return "re-adapt";
+      }
+    } // namespace
+
+
+
     void
     DeformationParameters::declare(ParameterHandler &prm)
     {
+      const DeformationParameters defaults;
+      const auto number = [](const double v) { return core::number_text(v); };
       prm.enter_subsection("Mesh deformation");
       prm.declare_entry(
         "Method",
-        "none",
+        name_of(defaults.method),
         Patterns::Selection(
           "none|laplace-kappa|laplace-alpha|pde-basic|pde-robust"),
         "r-adaptivity (thesis §5.5-5.7): laplace-kappa pulls vertices towards "
@@ -21,7 +64,7 @@ namespace particulate {
         "pde-robust solve Grajewski's deformation problem (one step, or as "
         "many blended steps as the monitor needs).");
       prm.declare_entry("Width",
-                        "0.1",
+                        number(defaults.width),
                         Patterns::Double(0.),
                         "[m] Distance from the body surfaces within which the "
                         "mesh is refined: the reach of the smoothing weight, "
@@ -29,49 +72,49 @@ namespace particulate {
                         "Width, Smallest cell ratio}}.");
       prm.declare_entry(
         "Peak weight",
-        "8",
+        number(defaults.peak_weight),
         Patterns::Double(1.),
         "Laplace-kappa/alpha: smoothing weight of a vertex on a "
         "surface (1 at distance Width and beyond).");
       prm.declare_entry("Relaxation",
-                        "0.5",
+                        number(defaults.relaxation),
                         Patterns::Double(0., 1.),
                         "omega of the weighted smoother, eq. 5.27.");
       prm.declare_entry("Sweeps per level",
-                        "4",
+                        core::list_text(defaults.sweeps_per_level),
                         Patterns::List(Patterns::Integer(0), 1),
                         "Smoothing sweeps on each level, coarsest first; the "
                         "last entry repeats for the finer levels.");
       prm.declare_entry("Smallest cell ratio",
-                        "0.1",
+                        number(defaults.smallest_cell_ratio),
                         Patterns::Double(0., 1.),
                         "PDE methods: epsilon, the smallest over the largest "
                         "target cell size.");
       prm.declare_entry("ODE steps",
-                        "20",
+                        std::to_string(defaults.ode_steps),
                         Patterns::Integer(1),
                         "PDE methods: Runge-Kutta steps of the vertex paths "
                         "(eq. 5.22).");
       prm.declare_entry("Robust step ratio",
-                        "2",
+                        number(defaults.step_ratio),
                         Patterns::Double(1.01),
                         "pde-robust: the target cell size changes by at most "
                         "this factor per adaptation step.");
       prm.declare_entry("Projection range",
-                        "0.45",
+                        number(defaults.projection_range),
                         Patterns::Double(0., 0.5),
                         "laplace-alpha: vertices (on every level) closer to a "
                         "surface than this fraction of their shortest edge "
                         "are put onto it.");
       prm.declare_entry("Minimum cell quality",
-                        "0.2",
+                        number(defaults.min_quality),
                         Patterns::Double(0., 1.),
                         "No move may leave a cell with a scaled Jacobian below "
                         "this (or below its value before the move): such moves "
                         "are cut back.");
       prm.declare_entry(
         "Moving bodies",
-        "re-adapt",
+        name_of(defaults.following),
         Patterns::Selection(
           "re-adapt|carry surface vertices|carry neighbourhood"),
         "How the mesh follows bodies that move: re-adapt adapts the "
@@ -90,14 +133,14 @@ namespace particulate {
         "'Re-adaptation aspect ratio' (or a surface vertex cannot follow).");
       prm.declare_entry(
         "Carried zone width",
-        "0.01",
+        number(defaults.carried_zone_width),
         Patterns::Double(0.),
         "[m] 'carry neighbourhood': vertices closer than this to a body's "
         "surface (and those inside it) move rigidly with the body. At least "
         "a cell beyond the surface, so that the cut cells keep their shape.");
       prm.declare_entry(
         "Carried zone fade",
-        "0.05",
+        number(defaults.carried_zone_fade),
         Patterns::Double(0.),
         "[m] 'carry neighbourhood': beyond 'Carried zone width' the "
         "vertices move by a share of the body's displacement that falls "
@@ -106,7 +149,7 @@ namespace particulate {
         "is adapted afresh.");
       prm.declare_entry(
         "Re-adaptation quality",
-        "0.3",
+        number(defaults.readaptation_quality),
         Patterns::Double(0., 1.),
         "'carry surface vertices' and 'carry neighbourhood': adapt afresh "
         "when the smallest scaled "
@@ -115,7 +158,7 @@ namespace particulate {
         "no move may cross.");
       prm.declare_entry(
         "Re-adaptation aspect ratio",
-        "20",
+        number(defaults.readaptation_aspect_ratio),
         Patterns::Double(1.),
         "Both carrying modes: adapt afresh when the largest aspect "
         "ratio of the carried mesh exceeds this (and that of the last fresh "

@@ -1,3 +1,4 @@
+#include <particulate/core/parameter_text.h>
 #include <particulate/cuda/containment_engine.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/fbm/particle_shape.h>
@@ -35,7 +36,92 @@ namespace particulate {
           }
         return axes;
       }
+
+      const std::array<std::string, 3> axis_names = {{"x", "y", "z"}};
+      const std::array<std::string, 6> face_names
+        = {{"x-", "x+", "y-", "y+", "z-", "z+"}};
+
+      std::string
+      axes_text(const std::array<bool, 3> &axes)
+      {
+        std::string text;
+        for (unsigned int d = 0; d < 3; ++d)
+          if (axes[d])
+            text += (text.empty() ? "" : ", ") + axis_names[d];
+        return text;
+      }
+
+      /// 'all', 'none' or the list of faces
+      std::string
+      faces_text(const std::array<bool, 6> &faces)
+      {
+        const auto n = std::count(faces.begin(), faces.end(), true);
+        if (n == 6)
+          return "all";
+        if (n == 0)
+          return "none";
+        std::string text;
+        for (unsigned int f = 0; f < 6; ++f)
+          if (faces[f])
+            text += (text.empty() ? "" : ", ") + face_names[f];
+        return text;
+      }
+
+      std::string
+      gravity_text(const Eigen::Vector3d &g)
+      {
+        return core::number_text(g[0]) + ", " + core::number_text(g[1]) + ", "
+               + core::number_text(g[2]);
+      }
+
+      const std::array<std::pair<CoveredNodes, std::string>, 3>
+        covered_nodes_names = {{{CoveredNodes::inside, "inside"},
+                                {CoveredNodes::halfway, "halfway"},
+                                {CoveredNodes::nearest, "nearest"}}};
+      const std::array<std::pair<ContainmentBackend, std::string>, 3>
+        backend_names = {{{ContainmentBackend::automatic, "auto"},
+                          {ContainmentBackend::cpu, "cpu"},
+                          {ContainmentBackend::cuda, "cuda"}}};
+
+      /// the choice named @p name in @p names (a validated selection)
+      template <typename Choice, std::size_t n>
+      Choice
+      choice_named(const std::array<std::pair<Choice, std::string>, n> &names,
+                   const std::string                                   &name)
+      {
+        for (const auto &[choice, text] : names)
+          if (text == name)
+            return choice;
+        throw std::logic_error("'" + name + "' passed a selection pattern");
+      }
+
+      template <typename Choice, std::size_t n>
+      std::string
+      name_of(const std::array<std::pair<Choice, std::string>, n> &names,
+              const Choice                                         choice)
+      {
+        for (const auto &[c, text] : names)
+          if (c == choice)
+            return text;
+        throw std::logic_error("a choice without a name");
+      }
     } // namespace
+
+
+
+    std::string
+    to_string(const CoveredNodes choice)
+    {
+      return name_of(covered_nodes_names, choice);
+    }
+
+
+
+    std::string
+    to_string(const ContainmentBackend choice)
+    {
+      return name_of(backend_names, choice);
+    }
 
 
 
@@ -43,10 +129,11 @@ namespace particulate {
     ParticleParameters::declare(ParameterHandler        &prm,
                                 const ParticleSetLayout &layout)
     {
+      const ParticleParameters defaults;
       prm.enter_subsection("Particles");
       declare_particle_set(prm, layout);
       prm.declare_entry("Gravity",
-                        "0, 0, -9.81",
+                        gravity_text(defaults.gravity),
                         Patterns::List(Patterns::Double(), 2, 3),
                         "Gravitational acceleration g [m/s^2] (the first dim "
                         "values are used). It acts on the particles as "
@@ -54,18 +141,18 @@ namespace particulate {
                         "pressure is left out of its equations (do not put "
                         "gravity into 'Fluid / Body force').");
       prm.declare_entry("Locked translations",
-                        "",
+                        axes_text(defaults.locked_translation),
                         Patterns::Anything(),
                         "World axes (list of x, y, z) along which the "
                         "particles may not move, e.g. 'x, y' for a sphere on "
                         "the symmetry line of a quarter domain.");
       prm.declare_entry("Locked rotations",
-                        "",
+                        axes_text(defaults.locked_rotation),
                         Patterns::Anything(),
                         "World axes about which the particles may not "
                         "rotate. 2D runs lock x and y themselves.");
       prm.declare_entry("Symmetry planes",
-                        "none",
+                        faces_text(defaults.symmetry_planes),
                         Patterns::Anything(),
                         "Faces of the mesh's bounding box (list of x-, x+, "
                         "y-, y+, z-, z+, or 'none') that are mirror planes "
@@ -77,7 +164,7 @@ namespace particulate {
                         "the output is that of the full set-up. Give these "
                         "faces a free-slip condition.");
       prm.declare_entry("Added mass coefficient",
-                        "1",
+                        core::number_text(defaults.added_mass_coefficient),
                         Patterns::Double(0.),
                         "C in the added mass m_a = C rho_f V that stabilises "
                         "the explicit coupling of light particles: the "
@@ -87,7 +174,9 @@ namespace particulate {
                         "for density ratios near 1 at small time steps. 0 "
                         "gives the plain explicit coupling.");
       prm.declare_entry("Constraint velocity",
-                        "extrapolated",
+                        defaults.extrapolate_constraint_velocity ?
+                          "extrapolated" :
+                          "current",
                         Patterns::Selection("current|extrapolated"),
                         "Rigid velocity the covered nodes get for a time "
                         "step of a free particle. 'extrapolated' (default): "
@@ -98,7 +187,8 @@ namespace particulate {
                         "(the fluid lags the particle by dt a: a first-order "
                         "error in time).");
       prm.declare_entry("Interface position",
-                        "midpoint",
+                        defaults.midpoint_interface_position ? "midpoint" :
+                                                               "start",
                         Patterns::Selection("start|midpoint"),
                         "Where a free particle is when its covered nodes are "
                         "marked for a time step. 'midpoint' (default): at "
@@ -112,7 +202,7 @@ namespace particulate {
                         "study).");
       prm.declare_entry(
         "Force integral",
-        "stress",
+        defaults.force_includes_fluid_inertia ? "stress and inertia" : "stress",
         Patterns::Selection("stress|stress and inertia"),
         "How the hydrodynamic force and torque are computed. 'stress': the "
         "volume integral -int sigma . grad alpha over the cut cells (thesis "
@@ -123,23 +213,25 @@ namespace particulate {
         "sum is the reaction of the discrete momentum equation at the "
         "covered nodes (doc/fbm.md, 'Force integral').");
       prm.declare_entry("Contact solver",
-                        "sequential impulses",
+                        rigid::to_string(defaults.contact_solver),
                         Patterns::Selection(
                           "sequential impulses|projected Gauss-Seidel|DEM"),
                         "Contact model of the rigid-body engine (thesis "
                         "§4.4).");
       prm.declare_entry("Restitution",
-                        "0",
+                        core::number_text(defaults.restitution),
                         Patterns::Double(0., 1.),
                         "Coefficient of restitution of particle-particle and "
                         "particle-wall contacts [-].");
       prm.declare_entry("Friction",
-                        "0",
+                        core::number_text(defaults.friction),
                         Patterns::Double(0.),
                         "Coulomb friction coefficient of contacts [-].");
       prm.declare_entry(
         "Contact distance",
-        "auto",
+        defaults.contact_distance ?
+          core::number_text(*defaults.contact_distance) :
+          "auto",
         Patterns::Anything(),
         "Gap [m] below which the rigid-body engine's contact model keeps two "
         "surfaces apart (particle-particle and particle-wall), or 'auto' for "
@@ -150,7 +242,7 @@ namespace particulate {
         "there instead (thesis §5.1: collisions by the rigid-body methods, "
         "not by repulsive forces). 0 lets the surfaces touch.");
       prm.declare_entry("Domain walls",
-                        "all",
+                        faces_text(defaults.walls),
                         Patterns::Anything(),
                         "Faces of the mesh's bounding box that are fixed "
                         "walls of the rigid-body engine, so that particles "
@@ -158,12 +250,12 @@ namespace particulate {
                         "list of x-, x+, y-, y+, z-, z+ (leave out symmetry "
                         "planes).");
       prm.declare_entry("Rigid substeps",
-                        "1",
+                        std::to_string(defaults.substeps),
                         Patterns::Integer(1),
                         "Rigid-body substeps per fluid time step.");
       prm.declare_entry(
         "Containment backend",
-        "auto",
+        to_string(defaults.containment_backend),
         Patterns::Selection("auto|cpu|cuda"),
         "How the velocity nodes inside the particles are found every step. "
         "cpu: a hash grid over the nodes and the particles' exact signed "
@@ -175,7 +267,7 @@ namespace particulate {
         "is 'inside', cpu otherwise.");
       prm.declare_entry(
         "Covered nodes",
-        "inside",
+        to_string(defaults.covered_nodes),
         Patterns::Selection("inside|halfway|nearest"),
         "Which velocity nodes take a particle's rigid velocity. inside: the "
         "nodes inside it or on its surface (signed distance <= 0, thesis eq. "
@@ -222,9 +314,10 @@ namespace particulate {
       midpoint_interface_position = prm.get("Interface position") == "midpoint";
       force_includes_fluid_inertia
         = prm.get("Force integral") == "stress and inertia";
-      contact_solver = prm.get("Contact solver");
-      restitution    = prm.get_double("Restitution");
-      friction       = prm.get_double("Friction");
+      contact_solver
+        = rigid::contact_solver_type_from_string(prm.get("Contact solver"));
+      restitution = prm.get_double("Restitution");
+      friction    = prm.get_double("Friction");
       {
         const std::string text = Utilities::trim(prm.get("Contact distance"));
         contact_distance.reset();
@@ -249,8 +342,7 @@ namespace particulate {
         faces.fill(text == "all");
         if (text != "all" && text != "none")
           {
-            const std::array<std::string, 6> names{
-              {"x-", "x+", "y-", "y+", "z-", "z+"}};
+            const auto &names = face_names;
             for (const std::string &w : Utilities::split_string_list(text, ','))
               {
                 const auto it = std::find(names.begin(), names.end(), w);
@@ -267,18 +359,21 @@ namespace particulate {
           }
         return faces;
       };
-      walls               = read_faces("Domain walls");
-      symmetry_planes     = read_faces("Symmetry planes");
-      substeps            = prm.get_integer("Rigid substeps");
-      containment_backend = prm.get("Containment backend");
-      covered_nodes       = prm.get("Covered nodes");
+      walls           = read_faces("Domain walls");
+      symmetry_planes = read_faces("Symmetry planes");
+      substeps        = prm.get_integer("Rigid substeps");
+      containment_backend
+        = choice_named(backend_names, prm.get("Containment backend"));
+      covered_nodes
+        = choice_named(covered_nodes_names, prm.get("Covered nodes"));
       prm.leave_subsection();
-      if (containment_backend == "cuda" && covered_nodes != "inside")
+      if (containment_backend == ContainmentBackend::cuda
+          && covered_nodes != CoveredNodes::inside)
         fail("Containment backend",
              "the cuda containment engine marks the nodes inside the "
              "particles only; set 'Covered nodes = inside' or choose "
              "'Containment backend = cpu' (or 'auto').");
-      if (containment_backend == "cuda"
+      if (containment_backend == ContainmentBackend::cuda
           && !cuda::ContainmentEngine::cuda_device_available())
         fail("Containment backend",
              cuda::ContainmentEngine::cuda_compiled() ?
@@ -307,7 +402,7 @@ namespace particulate {
                std::string("face ") + "xyz"[f / 2] + (f % 2 ? "+" : "-")
                  + " is also listed in 'Domain walls'; a mirror plane is not "
                    "a wall.");
-      if (containment_backend == "cuda")
+      if (containment_backend == ContainmentBackend::cuda)
         for (const ParticleDescription &p : bodies)
           if (!is_rotation_invariant(*p.shape, dim))
             fail("Containment backend",

@@ -56,16 +56,21 @@ namespace particulate {
         return Utilities::MPI::min(h, comm);
       }
 
-      /** The marking named by 'Covered nodes' (a validated selection). */
+      /** The marking that 'Covered nodes' chooses. */
       template <int dim>
       typename FictitiousBoundary<dim>::Marking
-      marking_from_name(const std::string &name)
+      marking_of(const CoveredNodes choice)
       {
         using Marking = typename FictitiousBoundary<dim>::Marking;
-        if (name == "nearest")
-          return Marking::nearest;
-        if (name == "halfway")
-          return Marking::halfway;
+        switch (choice)
+          {
+            case CoveredNodes::nearest:
+              return Marking::nearest;
+            case CoveredNodes::halfway:
+              return Marking::halfway;
+            case CoveredNodes::inside:
+              break;
+          }
         return Marking::inside;
       }
     } // namespace
@@ -380,9 +385,8 @@ namespace particulate {
       // Added-mass correction (RigidBodyUpdate): the engine integrates a
       // free particle with mass m + m_a, its density rho_p + C rho_f.
       rigid::WorldParameters world_p;
-      world_p.gravity = Eigen::Vector3d::Zero(); // applied as (dM) g
-      world_p.contact_solver
-        = rigid::contact_solver_type_from_string(particle_p.contact_solver);
+      world_p.gravity        = Eigen::Vector3d::Zero(); // applied as (dM) g
+      world_p.contact_solver = particle_p.contact_solver;
       world_p.substeps       = particle_p.substeps;
       world_p.contact_offset = particle_p.contact_distance ?
                                  *particle_p.contact_distance :
@@ -486,8 +490,7 @@ namespace particulate {
       Run        &r          = *run_;
       const auto &particle_p = parameters.particles;
       r.interface = std::make_unique<FictitiousBoundary<dim>>(*r.flow);
-      r.interface->set_marking(
-        marking_from_name<dim>(particle_p.covered_nodes));
+      r.interface->set_marking(marking_of<dim>(particle_p.covered_nodes));
       r.interface->setup();
       // the engine marks the nodes inside spheres and disks only: 'auto'
       // keeps the hash grid for other markings and shapes (checked for
@@ -498,9 +501,10 @@ namespace particulate {
                       [](const ParticleDescription &p) {
                         return is_rotation_invariant(*p.shape, dim);
                       });
-      if (particle_p.containment_backend == "cuda"
-          || (particle_p.containment_backend == "auto"
-              && particle_p.covered_nodes == "inside" && engine_takes_all_shapes
+      if (particle_p.containment_backend == ContainmentBackend::cuda
+          || (particle_p.containment_backend == ContainmentBackend::automatic
+              && particle_p.covered_nodes == CoveredNodes::inside
+              && engine_takes_all_shapes
               && cuda::ContainmentEngine::cuda_device_available()))
         r.interface->use_containment_engine(cuda::Backend::cuda);
       for (const auto id : r.ids)

@@ -1,4 +1,5 @@
 #include <particulate/core/input_file.h>
+#include <particulate/core/parameter_text.h>
 #include <particulate/fluid/fluid_parameters.h>
 
 #include <algorithm>
@@ -36,34 +37,36 @@ namespace particulate {
     void
     FluidProperties::declare(ParameterHandler &prm)
     {
+      const FluidProperties defaults;
       prm.enter_subsection("Fluid");
       prm.declare_entry("Density",
-                        "1",
+                        core::number_text(defaults.density),
                         Patterns::Double(0.),
                         "Fluid density rho [kg/m^3].");
       prm.declare_entry("Dynamic viscosity",
-                        "1e-3",
+                        core::number_text(defaults.dynamic_viscosity),
                         Patterns::Double(0.),
                         "Dynamic viscosity mu [Pa s] (NOT the kinematic "
                         "viscosity nu = mu/rho). For the Carreau model this is "
                         "the zero-shear viscosity mu_0.");
       prm.declare_entry(
         "Viscosity model",
-        "Newtonian",
+        defaults.viscosity_model,
         Patterns::Selection("Newtonian|Carreau"),
         "Newtonian: constant mu. Carreau: mu = mu_inf + (mu_0 - mu_inf) (1 + "
         "(lambda gamma_dot)^2)^((n-1)/2), shear-thinning for n < 1 and "
         "shear-thickening for n > 1.");
       prm.declare_entry("Carreau infinite-shear viscosity",
-                        "0",
+                        core::number_text(
+                          defaults.carreau_infinite_shear_viscosity),
                         Patterns::Double(0.),
                         "Carreau: mu_inf [Pa s].");
       prm.declare_entry("Carreau relaxation time",
-                        "1",
+                        core::number_text(defaults.carreau_relaxation_time),
                         Patterns::Double(0.),
                         "Carreau: lambda [s].");
       prm.declare_entry("Carreau exponent",
-                        "1",
+                        core::number_text(defaults.carreau_exponent),
                         Patterns::Double(0.),
                         "Carreau: power-law index n [-].");
       core::FunctionExpression::declare(prm,
@@ -186,30 +189,31 @@ namespace particulate {
     void
     NonlinearSolverParameters::declare(ParameterHandler &prm)
     {
+      const NonlinearSolverParameters defaults;
       prm.enter_subsection("Nonlinear solver");
       prm.declare_entry("Method",
-                        "Newton",
+                        defaults.method,
                         Patterns::Selection("Newton|fixed point"),
                         "Linearisation of the convective term. Newton "
                         "converges quadratically; it falls back to the "
                         "fixed-point (Oseen) iteration for the rest of the "
                         "step when the residual stops decreasing.");
       prm.declare_entry("Absolute tolerance",
-                        "1e-10",
+                        core::number_text(defaults.absolute_tolerance),
                         Patterns::Double(0.),
                         "Stop when the l2 norm of the residual is below this.");
       prm.declare_entry("Relative tolerance",
-                        "1e-6",
+                        core::number_text(defaults.relative_tolerance),
                         Patterns::Double(0.),
                         "Stop when the residual has fallen by this factor.");
       prm.declare_entry("Maximum iterations",
-                        "20",
+                        std::to_string(defaults.maximum_iterations),
                         Patterns::Integer(1),
                         "Nonlinear iterations per (sub)step before the run "
                         "stops with an error.");
       prm.declare_entry(
         "Initial guess",
-        "extrapolated",
+        defaults.initial_guess,
         Patterns::Selection("extrapolated|previous solution"),
         "First iterate of every (sub)step. 'extrapolated': the solution at "
         "the start of the (sub)step plus the rate of change over the last "
@@ -236,24 +240,25 @@ namespace particulate {
     void
     LinearSolverParameters::declare(ParameterHandler &prm)
     {
+      const LinearSolverParameters defaults;
       prm.enter_subsection("Linear solver");
       prm.declare_entry("Relative tolerance",
-                        "1e-4",
+                        core::number_text(defaults.relative_tolerance),
                         Patterns::Double(0.),
                         "FGMRES stops when the residual of the Newton update "
                         "has fallen by this factor.");
       prm.declare_entry("Maximum iterations",
-                        "1000",
+                        std::to_string(defaults.maximum_iterations),
                         Patterns::Integer(1),
                         "FGMRES iterations before the run stops with an "
                         "error.");
       prm.declare_entry("Krylov subspace size",
-                        "100",
+                        std::to_string(defaults.krylov_size),
                         Patterns::Integer(5),
                         "Restart length of FGMRES.");
       prm.declare_entry(
         "Schur complement approximation",
-        "automatic",
+        defaults.schur_approximation,
         Patterns::Selection(
           "automatic|Cahouet-Chabard|least-squares commutator"),
         "Cahouet-Chabard: theta mu M_p^-1 + rho/k L_p^-1, cheap and robust "
@@ -267,7 +272,7 @@ namespace particulate {
         "steady', Cahouet-Chabard otherwise.");
       prm.declare_entry(
         "Pressure Poisson solver",
-        "CG",
+        defaults.pressure_poisson_solver,
         Patterns::Selection("CG|V-cycle"),
         "How the Schur complement approximation applies L_p^-1, the inverse "
         "of the pressure Laplacian. CG: conjugate gradients preconditioned "
@@ -277,7 +282,9 @@ namespace particulate {
         "iterations. The least-squares commutator always uses CG.");
       prm.declare_entry(
         "Pressure Poisson tolerance",
-        "automatic",
+        defaults.pressure_poisson_tolerance > 0. ?
+          core::number_text(defaults.pressure_poisson_tolerance) :
+          std::string("automatic"),
         Patterns::Anything(),
         "Relative tolerance of the inner CG+AMG solves with the pressure "
         "Laplacian L_p inside the Schur complement approximation ('Pressure "
@@ -289,7 +296,7 @@ namespace particulate {
         "(doc/performance.md).");
       prm.declare_entry(
         "Pressure Laplacian smoother",
-        "ILU",
+        defaults.pressure_laplacian_smoother,
         Patterns::Selection("ILU|Chebyshev"),
         "Smoother on every level of the ML V-cycle that preconditions the "
         "inner CG with the pressure Laplacian L_p. ILU: one ILU(0) sweep "
@@ -300,7 +307,7 @@ namespace particulate {
         "cells such as the 3D DFG channel (doc/performance.md).");
       prm.declare_entry(
         "Velocity preconditioner",
-        "AMG",
+        defaults.velocity_preconditioner,
         Patterns::Selection("AMG|Chebyshev|geometric multigrid"),
         "Approximate inverse of the velocity block inside the block "
         "preconditioner. AMG: one V-cycle of Trilinos ML, robust for any "
@@ -321,7 +328,7 @@ namespace particulate {
         "without hanging nodes and free-slip planes normal to an axis.");
       prm.declare_entry(
         "Velocity operator",
-        "assembled",
+        defaults.velocity_operator,
         Patterns::Selection("assembled|matrix-free"),
         "How the outer FGMRES applies the velocity block of the Newton "
         "system. assembled: a Trilinos matrix, assembled at every Newton "
@@ -336,7 +343,7 @@ namespace particulate {
         "planes normal to an axis).");
       prm.declare_entry(
         "Multigrid coarse solver",
-        "automatic",
+        defaults.multigrid_coarse_solver,
         Patterns::Selection("automatic|Chebyshev|CG + AMG"),
         "Coarse-level solve of the geometric multigrid velocity V-cycle (on "
         "the unrefined mesh). Chebyshev: a Jacobi-preconditioned Chebyshev "
@@ -353,7 +360,7 @@ namespace particulate {
         "products on that level), CG + AMG otherwise.");
       prm.declare_entry(
         "Multigrid on a moving mesh",
-        "rebuild",
+        defaults.multigrid_on_moving_mesh,
         Patterns::Selection("rebuild|keep"),
         "What the geometric multigrid velocity preconditioner does when the "
         "mesh vertices move (ALE: r-adaptivity, 'Moving bodies' in "
@@ -368,20 +375,20 @@ namespace particulate {
         "which interpolates the flow onto a new mesh, and a checkpoint "
         "always rebuild.");
       prm.declare_entry("Chebyshev degree",
-                        "4",
+                        std::to_string(defaults.chebyshev_degree),
                         Patterns::Integer(1, 50),
                         "Degree of the Chebyshev velocity preconditioner "
                         "(matrix-vector products per application), and of "
                         "the multigrid smoother's polynomial.");
       prm.declare_entry("AMG elliptic",
-                        "true",
+                        core::flag_text(defaults.amg_elliptic),
                         Patterns::Bool(),
                         "Trilinos ML aggregation for the velocity block: true "
                         "uses smoothed aggregation (diffusion/mass dominated "
                         "flow), false the non-symmetric variant (strong "
                         "convection).");
       prm.declare_entry("AMG smoother",
-                        "ILU",
+                        defaults.amg_smoother,
                         Patterns::Selection(
                           "Chebyshev|symmetric Gauss-Seidel|Gauss-Seidel|ILU"),
                         "Smoother on every level of the velocity AMG. ILU is "
@@ -389,11 +396,11 @@ namespace particulate {
                         "Chebyshev and Gauss-Seidel can stagnate when "
                         "convection matters.");
       prm.declare_entry("AMG smoother sweeps",
-                        "2",
+                        std::to_string(defaults.amg_smoother_sweeps),
                         Patterns::Integer(1),
                         "Smoothing sweeps per level of the velocity AMG.");
       prm.declare_entry("Verbose",
-                        "false",
+                        core::flag_text(defaults.verbose),
                         Patterns::Bool(),
                         "Print every nonlinear iteration's residual.");
       prm.leave_subsection();
@@ -458,6 +465,7 @@ namespace particulate {
     void
     ForceParameters::declare(ParameterHandler &prm)
     {
+      const ForceParameters defaults;
       prm.enter_subsection("Forces");
       prm.declare_entry("Body boundary ids",
                         "",
@@ -465,11 +473,11 @@ namespace particulate {
                         "Boundary ids of the obstacle whose drag and lift are "
                         "written (empty: none).");
       prm.declare_entry("Reference velocity",
-                        "1",
+                        core::number_text(defaults.reference_velocity),
                         Patterns::Double(0.),
                         "U in c = 2F/(rho U^2 A) [m/s].");
       prm.declare_entry("Reference area",
-                        "1",
+                        core::number_text(defaults.reference_area),
                         Patterns::Double(0.),
                         "A in c = 2F/(rho U^2 A) [m^2]; in 2D a length [m] "
                         "(per unit depth).");

@@ -4,6 +4,7 @@
 #include <particulate/core/input_outline.h>
 #include <particulate/fbm/particle_description.h>
 #include <particulate/fbm/particle_set_parameters.h>
+#include <particulate/rigid/contact_solver.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -16,6 +17,28 @@
 
 namespace particulate {
   namespace fbm {
+    /** 'Covered nodes': which velocity nodes take a body's rigid velocity. */
+    enum class CoveredNodes
+    {
+      inside,
+      halfway,
+      nearest
+    };
+
+    /** 'Containment backend': how the covered nodes are found. */
+    enum class ContainmentBackend
+    {
+      automatic,
+      cpu,
+      cuda
+    };
+
+    /** The name of @p choice in a case file ("inside", "auto", ...). */
+    std::string
+    to_string(CoveredNodes choice);
+    std::string
+    to_string(ContainmentBackend choice);
+
     /**
      * subsection `Particles`: the rigid bodies of a fictitious-boundary run
      * (thesis §5.2-5.3) and the coupling options. The particles are
@@ -36,17 +59,18 @@ namespace particulate {
       double added_mass_coefficient = 1.;
       /// 'Constraint velocity = extrapolated': the covered nodes get the
       /// velocity predicted for the end of the step, U_n + dt a_n
-      bool extrapolate_constraint_velocity = false;
+      bool extrapolate_constraint_velocity = true;
       /// 'Interface position = midpoint': the covered nodes of a step are
       /// those of the particle moved and turned to the middle of the step
-      bool midpoint_interface_position = false;
+      bool midpoint_interface_position = true;
       /// 'Force integral = stress and inertia': the loads include the
       /// momentum of the fluid in the cut cells (fluid_inertia_loads)
       bool force_includes_fluid_inertia = false;
       /// contact handling
-      std::string contact_solver = "sequential impulses";
-      double      restitution    = 0.;
-      double      friction       = 0.;
+      rigid::ContactSolverType contact_solver
+        = rigid::ContactSolverType::sequential_impulses;
+      double restitution = 0.;
+      double friction    = 0.;
       /// film thickness [m] kept between surfaces by the contact model;
       /// empty: one cell of the finest mesh level (see 'Contact distance')
       std::optional<double> contact_distance;
@@ -54,10 +78,8 @@ namespace particulate {
       /// the order x-, x+, y-, y+, z-, z+
       std::array<bool, 6> walls    = {{true, true, true, true, true, true}};
       unsigned int        substeps = 1;
-      /// "auto", "cpu" or "cuda": how the FBM finds the nodes inside bodies
-      std::string containment_backend = "auto";
-      /// 'Covered nodes': "inside", "halfway" or "nearest"
-      std::string covered_nodes = "inside";
+      ContainmentBackend  containment_backend = ContainmentBackend::automatic;
+      CoveredNodes        covered_nodes       = CoveredNodes::inside;
       /// faces of the mesh's bounding box that are mirror planes of the
       /// set-up (x-, x+, y-, y+, z-, z+): the particles lie on them, and the
       /// loads integrated over the part of each body inside the mesh are
@@ -67,7 +89,8 @@ namespace particulate {
 
       /**
        * Declare the entries, with the list subsections of @p layout (those
-       * the case file holds; see ParticleSetLayout).
+       * the case file holds; see ParticleSetLayout). Their defaults are the
+       * values of a default-constructed ParticleParameters.
        */
       static void
       declare(dealii::ParameterHandler &prm, const ParticleSetLayout &layout);

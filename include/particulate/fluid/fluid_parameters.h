@@ -111,7 +111,7 @@ namespace particulate {
       /// "rebuild" or "keep": the velocity V-cycle after a mesh motion
       std::string  multigrid_on_moving_mesh = "rebuild";
       bool         amg_elliptic             = true;
-      std::string  amg_smoother             = "Chebyshev";
+      std::string  amg_smoother             = "ILU";
       unsigned int amg_smoother_sweeps      = 2;
       bool         verbose                  = false;
 
