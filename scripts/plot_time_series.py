@@ -2,7 +2,7 @@
 """Plot columns of a Particulate time series (.dat with a '# name name ...'
 header) against time and save a PNG.
 
-    plot_time_series.py output/quickstart/flow.dat --columns c_D c_L
+    plot_time_series.py output/cylinder-in-channel/flow.dat --columns c_D c_L
 """
 import argparse
 import sys
