@@ -29,7 +29,7 @@ def main():
     parser.add_argument("file", help=".dat time series")
     parser.add_argument("--columns", nargs="+", default=["c_D", "c_L"],
                         help="columns to plot, one panel each")
-    parser.add_argument("--output", help="PNG to write (default: FILE.png)")
+    parser.add_argument("--output", help="PNG to write (default: FILE with .png for .dat)")
     parser.add_argument("--title", default=None)
     args = parser.parse_args()
 
