@@ -3,14 +3,20 @@
 prm/ten-cate/ten-cate-e*.prm with the experiment and plot them.
 
     scripts/validation/ten_cate.py output/ten-cate-e4 [output/ten-cate-e3 ...]
-        [--doc doc/validation]
+        [--doc FOLDER] [--max-error PERCENT] [--min-gap G] [--series FILE]
 
 For each output folder (the case is read from its used_parameters.prm) it
 prints u_max, its time and its error against the experiment's maximum
-settling velocity (ten Cate's Table II), and writes into --doc:
-ten-cate-velocity.png (settling velocity), ten-cate-gap.png (gap height
-h/d_p), ten-cate-energy.png (particle and fluid kinetic energy) and
-ten-cate.dat (the table).
+settling velocity (ten Cate's Table II), and writes into --doc (default:
+the first folder) ten-cate-velocity.png (settling velocity),
+ten-cate-gap.png (gap height h/d_p), ten-cate-energy.png (particle and
+fluid kinetic energy) and ten-cate.dat (the table). --min-gap takes u_max
+over the part of each run where the gap h/d_p is at least G (the approach
+to the floor left out). With --max-error it exits 1 unless every run has
+passed its maximum in that part (the velocity falls after it) within
+PERCENT of the experiment. --series writes the first run's time, settling
+velocity and gap, a few kB, for the report (scripts/validation/
+ten_cate_report.py).
 """
 import argparse
 import os
@@ -52,14 +58,25 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("folders", nargs="+")
-    parser.add_argument("--doc", default="doc/validation")
+    parser.add_argument("--doc", default=None,
+                        help="folder for the figures and the table "
+                        "(default: the first run's folder)")
     parser.add_argument("--label", nargs="*", default=None,
                         help="legend label per folder (default: folder name)")
+    parser.add_argument("--max-error", type=float, default=None,
+                        help="bound on |u_max error| [%%]; exit 1 beyond it")
+    parser.add_argument("--min-gap", type=float, default=0.,
+                        help="take u_max where the gap h/d_p >= this")
+    parser.add_argument("--series", default=None,
+                        help="write time, settling velocity and gap of the "
+                        "first run to this file")
     args = parser.parse_args()
+    args.doc = args.doc or args.folders[0]
     os.makedirs(args.doc, exist_ok=True)
 
     figs = {k: plt.subplots(figsize=(7, 4)) for k in ("velocity", "gap", "energy")}
     rows = []
+    failures = []
     for k, folder in enumerate(args.folders):
         case = identify(folder)
         u_exp = EXPERIMENT[case][2]
@@ -70,10 +87,26 @@ def main():
         z = p[:, names.index("z")]
         radius = float(used_value(folder, "Radius"))
         gap = (z - radius) / (2 * radius)
-        i = int(np.argmax(w))
+        window = np.nonzero(gap >= args.min_gap)[0]
+        if len(window) == 0:
+            sys.exit(f"{folder}: the gap is below {args.min_gap} from the start")
+        i = int(window[np.argmax(w[window])])
         error = (w[i] - u_exp) / u_exp
         label = args.label[k] if args.label else os.path.basename(folder.rstrip("/"))
         rows.append((case, label, w[i], t[i], u_exp, error, t[-1]))
+        if args.max_error is not None:
+            if i == window[-1]:
+                failures.append(f"{case} {label}: still accelerating at the "
+                                f"end, t = {t[-1]:.3f} s (no maximum yet)")
+            elif abs(100 * error) > args.max_error:
+                failures.append(f"{case} {label}: u_max error "
+                                f"{100 * error:+.2f} % beyond "
+                                f"{args.max_error} %")
+        if args.series and k == 0:
+            np.savetxt(args.series, np.column_stack((t, w, gap)),
+                       fmt="%.6g",
+                       header=f"ten Cate {case}, {label}: time [s], settling "
+                       "velocity [m/s], gap h/d_p")
         print(f"{case} {label}: u_max = {w[i]:.5f} m/s at t = {t[i]:.3f} s, "
               f"experiment {u_exp:.5f} m/s, error {100 * error:+.2f} % "
               f"(run to t = {t[-1]:.3f} s)")
@@ -103,6 +136,9 @@ def main():
         for r in rows:
             f.write(f"{r[0]} {r[1]} {r[2]:.6g} {r[3]:.4g} {r[4]:.6g} "
                     f"{r[5]:.5g} {r[6]:.4g}\n")
+    for failure in failures:
+        print("FAILED:", failure)
+    sys.exit(1 if failures else 0)
 
 
 if __name__ == "__main__":

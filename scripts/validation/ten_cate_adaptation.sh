@@ -3,7 +3,7 @@
 # "Sedimentation with Laplace-kappa"): a ten Cate case on the regular mesh
 # at Refinements = 0 and 1 against the mesh at Refinements = 0 adapted to the
 # sphere by Laplace-kappa every step (Width = one diameter, the other entries
-# at their defaults), with the case file's covered nodes ('inside'), and all
+# at their defaults), with 'Covered nodes = inside', and all
 # but Refinements = 1 again with 'Covered nodes = nearest'.
 # Laplace-kappa runs twice: with the default 4 'Sweeps per level' (folder
 # suffix -kappa) and with 16 (-kappa-s16; at Refinements = 0 there is a single
@@ -21,6 +21,18 @@ levels=(0 1)
 [[ "${2:-}" == "--r0-only" ]] && levels=(0)
 time_prm=''
 [[ -n "${END_TIME:-}" ]] && time_prm="subsection Time\\n  set End time = ${END_TIME}\\nend\\n"
+# pinned_prm <covered>: the settings of the study, which the case files no
+# longer ship (they carry the mesh with the sphere): the mesh adapted afresh
+# every step, 'Force integral = stress', the Chebyshev velocity
+# preconditioner on the assembled operator, and 'Covered nodes = inside'
+# unless <covered> names another marking
+pinned_prm() {
+  printf '%s' 'subsection Mesh deformation\n  set Moving bodies = re-adapt\nend\n'
+  printf '%s' 'subsection Particles\n  set Force integral = stress\n'
+  [[ -n "$1" ]] || printf '%s' '  set Covered nodes = inside\n'
+  printf '%s' 'end\nsubsection Linear solver\n  set Velocity preconditioner = Chebyshev\n'
+  printf '%s' '  set Velocity operator = assembled\nend\n'
+}
 # kappa_prm <sweeps>: the Laplace-kappa subsection
 kappa_prm() {
   printf '%s' 'subsection Mesh deformation\n  set Method = laplace-kappa\n'
@@ -42,14 +54,15 @@ for covered in "" nearest; do
   folders=(); labels=()
   for level in "${levels[@]}"; do
     plain="output/ten-cate-${case_name}-r${level}${suffix}"
-    run_level "$plain" "$level" COVERED_NODES="$covered" EXTRA_PRM="$time_prm"
+    run_level "$plain" "$level" COVERED_NODES="$covered" \
+      EXTRA_PRM="$(pinned_prm "$covered")$time_prm"
     folders+=("$plain")
     labels+=("r=${level}, $((3 << level)) cells/D${covered:+, $covered}")
     [[ "$level" == 0 ]] || continue
     for sweeps in 4 16; do
       tag=kappa; [[ "$sweeps" == 4 ]] || tag+="-s${sweeps}"
       run_level "$plain-$tag" 0 COVERED_NODES="$covered" TAG="$tag" \
-        EXTRA_PRM="$(kappa_prm "$sweeps")$time_prm"
+        EXTRA_PRM="$(pinned_prm "$covered")$(kappa_prm "$sweeps")$time_prm"
       folders+=("$plain-$tag")
       labels+=("r=0 + Laplace-kappa, $sweeps sweeps${covered:+, $covered}")
     done
