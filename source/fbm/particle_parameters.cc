@@ -105,6 +105,40 @@ namespace particulate {
             return text;
         throw std::logic_error("a choice without a name");
       }
+
+      /**
+       * subsection 'Particles / Experimental': coupling variants kept to
+       * study the coupling (the added-mass study compares them), not for
+       * production runs: each is less accurate than the default.
+       */
+      void
+      declare_experimental(ParameterHandler         &prm,
+                           const ParticleParameters &defaults)
+      {
+        prm.enter_subsection("Experimental");
+        prm.declare_entry(
+          "Constraint velocity",
+          defaults.extrapolate_constraint_velocity ? "extrapolated" : "current",
+          Patterns::Selection("current|extrapolated"),
+          "Experimental. Rigid velocity the covered nodes get for a time step "
+          "of a free particle. 'extrapolated' (default): U_n + dt a_n with a_n "
+          "the acceleration of the last step, the velocity predicted for the "
+          "end of the step (likewise for rotation). 'current': the "
+          "particle's velocity at the start of the step, U_n (the fluid lags "
+          "the particle by dt a: a first-order error in time).");
+        prm.declare_entry(
+          "Interface position",
+          defaults.midpoint_interface_position ? "midpoint" : "start",
+          Patterns::Selection("start|midpoint"),
+          "Experimental. Where a free particle is when its covered nodes are "
+          "marked for a time step. 'midpoint' (default): at X_n + dt/2 (U_n + "
+          "dt/2 a_n), the position predicted for the middle of the step, and "
+          "turned likewise by dt/2 (omega_n + dt/2 alpha_n); the "
+          "hydrodynamic torque is taken about that point too. 'start': at "
+          "X_n, so the fluid sees the particle half a step behind on average "
+          "(first order in time).");
+        prm.leave_subsection();
+      }
     } // namespace
 
 
@@ -173,33 +207,7 @@ namespace particulate {
                         "which equals m a = F at convergence but stays stable "
                         "for density ratios near 1 at small time steps. 0 "
                         "gives the plain explicit coupling.");
-      prm.declare_entry("Constraint velocity",
-                        defaults.extrapolate_constraint_velocity ?
-                          "extrapolated" :
-                          "current",
-                        Patterns::Selection("current|extrapolated"),
-                        "Rigid velocity the covered nodes get for a time "
-                        "step of a free particle. 'extrapolated' (default): "
-                        "U_n + dt a_n with a_n the acceleration of the last "
-                        "step, the velocity predicted for the end of the "
-                        "step (likewise for rotation). 'current': the "
-                        "particle's velocity at the start of the step, U_n "
-                        "(the fluid lags the particle by dt a: a first-order "
-                        "error in time).");
-      prm.declare_entry("Interface position",
-                        defaults.midpoint_interface_position ? "midpoint" :
-                                                               "start",
-                        Patterns::Selection("start|midpoint"),
-                        "Where a free particle is when its covered nodes are "
-                        "marked for a time step. 'midpoint' (default): at "
-                        "X_n + dt/2 (U_n + dt/2 a_n), the position predicted "
-                        "for the middle of the step, and turned likewise by "
-                        "dt/2 (omega_n + dt/2 alpha_n); the hydrodynamic "
-                        "torque is taken about that point too. 'start': at "
-                        "X_n, so the fluid sees the particle half a step "
-                        "behind on average (first order in time); kept to "
-                        "study the coupling (doc/fbm.md, added-mass "
-                        "study).");
+      declare_experimental(prm, defaults);
       prm.declare_entry(
         "Force integral",
         defaults.force_includes_fluid_inertia ? "stress and inertia" : "stress",
@@ -309,9 +317,11 @@ namespace particulate {
         = parse_axes(prm.get("Locked rotations"),
                      outline.where({"Particles"}, "Locked rotations"));
       added_mass_coefficient = prm.get_double("Added mass coefficient");
+      prm.enter_subsection("Experimental");
       extrapolate_constraint_velocity
         = prm.get("Constraint velocity") == "extrapolated";
       midpoint_interface_position = prm.get("Interface position") == "midpoint";
+      prm.leave_subsection();
       force_includes_fluid_inertia
         = prm.get("Force integral") == "stress and inertia";
       contact_solver

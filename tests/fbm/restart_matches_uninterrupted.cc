@@ -128,8 +128,10 @@ main(int argc, char **argv)
   const std::vector<Variant> variants
     = {{"", "", ""},
        {"_start",
-        " set Constraint velocity = current\n"
-        " set Interface position = start\n",
+        " subsection Experimental\n"
+        "  set Constraint velocity = current\n"
+        "  set Interface position = start\n"
+        " end\n",
         ""},
        {"_inertia", " set Force integral = stress and inertia\n", ""},
        {"_carried",
