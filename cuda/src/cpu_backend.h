@@ -1,6 +1,6 @@
 // The CPU path of ContainmentEngine (private to the library).
-#ifndef PARTICULATE_CUDA_SRC_CPU_BACKEND_H
-#define PARTICULATE_CUDA_SRC_CPU_BACKEND_H
+#ifndef particulate_cuda_src_cpu_backend_h
+#define particulate_cuda_src_cpu_backend_h
 
 #include <particulate/cuda/detail/point_query.h>
 

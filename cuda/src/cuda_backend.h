@@ -1,8 +1,8 @@
 // The CUDA path of ContainmentEngine (private to the library). This header is
 // plain C++ (no CUDA types) so that containment_engine.cc, compiled by the
 // host compiler, can drive it; the implementation is cuda_backend.cu.
-#ifndef PARTICULATE_CUDA_SRC_CUDA_BACKEND_H
-#define PARTICULATE_CUDA_SRC_CUDA_BACKEND_H
+#ifndef particulate_cuda_src_cuda_backend_h
+#define particulate_cuda_src_cuda_backend_h
 
 #include <particulate/cuda/detail/point_query.h>
 

@@ -3,8 +3,8 @@
 // per-call world grid over the bodies' bounding boxes (a broad phase).
 // Private to the library; both backends use the very same grids, so culling
 // never makes the CPU and the GPU disagree.
-#ifndef PARTICULATE_CUDA_SRC_UNIFORM_GRIDS_H
-#define PARTICULATE_CUDA_SRC_UNIFORM_GRIDS_H
+#ifndef particulate_cuda_src_uniform_grids_h
+#define particulate_cuda_src_uniform_grids_h
 
 #include <particulate/cuda/containment_types.h>
 #include <particulate/cuda/detail/point_query.h>

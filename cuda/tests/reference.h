@@ -2,8 +2,8 @@
 // but the same rounded float operations as the library (detail/point_query.h).
 // Agreement with it bit for bit shows that the broad-phase grid and the
 // sphere grids never drop a body or a sphere.
-#ifndef PARTICULATE_CUDA_TESTS_REFERENCE_H
-#define PARTICULATE_CUDA_TESTS_REFERENCE_H
+#ifndef particulate_cuda_tests_reference_h
+#define particulate_cuda_tests_reference_h
 
 #include <particulate/cuda/containment_engine.h>
 #include <particulate/cuda/detail/point_query.h>

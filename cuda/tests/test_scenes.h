@@ -1,8 +1,8 @@
 // Test and benchmark data built in place, so that nothing needs CGAL: analytic
 // signed distances (sphere, box, torus) sampled onto distance maps, inner-
 // sphere sets carved from them, random sphere packs, random poses and points.
-#ifndef PARTICULATE_CUDA_TESTS_TEST_SCENES_H
-#define PARTICULATE_CUDA_TESTS_TEST_SCENES_H
+#ifndef particulate_cuda_tests_test_scenes_h
+#define particulate_cuda_tests_test_scenes_h
 
 #include <particulate/cuda/containment_types.h>
 

@@ -37,8 +37,8 @@ namespace particulate {
                    "coarsely: the drag of a fixed cylinder is 2.6 % low at 4 "
                    "cells per diameter and within 1.3 % from 8 on "
                    "(doc/fbm.md). Refine the mesh around the particles "
-                   "('Refinements' in subsection 'Mesh', or 'Mesh "
-                   "adaptation') if their forces matter.";
+                   "('Refinements' in subsection 'Mesh', or subsection "
+                   "'Mesh deformation') if their forces matter.";
         return message.str();
       }
 

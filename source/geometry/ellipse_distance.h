@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_SOURCE_GEOMETRY_ELLIPSE_DISTANCE_H
-#define PARTICULATE_SOURCE_GEOMETRY_ELLIPSE_DISTANCE_H
+#ifndef particulate_source_geometry_ellipse_distance_h
+#define particulate_source_geometry_ellipse_distance_h
 
 // The exact closest point on an ellipse, which the ellipsoid (on its
 // principal planes) and the elliptic cylinder (its cross-section) share

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_SOURCE_GEOMETRY_SHAPE_FORMULAS_H
-#define PARTICULATE_SOURCE_GEOMETRY_SHAPE_FORMULAS_H
+#ifndef particulate_source_geometry_shape_formulas_h
+#define particulate_source_geometry_shape_formulas_h
 
 // Closed forms that several analytic shapes share (private to the module).
 

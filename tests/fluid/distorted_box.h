@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_TESTS_FLUID_DISTORTED_BOX_H
-#define PARTICULATE_TESTS_FLUID_DISTORTED_BOX_H
+#ifndef particulate_tests_fluid_distorted_box_h
+#define particulate_tests_fluid_distorted_box_h
 
 // The set-up two matrix tests share: a distorted box, fully distributed
 // over the ranks, with Q2^dim x P1disc DoFs numbered velocities first, and

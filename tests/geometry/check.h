@@ -1,7 +1,7 @@
 // Small assertion helpers shared by the geometry tests (plain mains, no
 // test framework: exit 0 pass, 1 fail, 77 skip).
-#ifndef PARTICULATE_TESTS_GEOMETRY_CHECK_H
-#define PARTICULATE_TESTS_GEOMETRY_CHECK_H
+#ifndef particulate_tests_geometry_check_h
+#define particulate_tests_geometry_check_h
 
 #include <cstdlib>
 #include <filesystem>

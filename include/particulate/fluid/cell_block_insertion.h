@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_FLUID_CELL_BLOCK_INSERTION_H
-#define PARTICULATE_FLUID_CELL_BLOCK_INSERTION_H
+#ifndef particulate_fluid_cell_block_insertion_h
+#define particulate_fluid_cell_block_insertion_h
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/types.h>

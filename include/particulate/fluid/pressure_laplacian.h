@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_FLUID_PRESSURE_LAPLACIAN_H
-#define PARTICULATE_FLUID_PRESSURE_LAPLACIAN_H
+#ifndef particulate_fluid_pressure_laplacian_h
+#define particulate_fluid_pressure_laplacian_h
 
 #include <deal.II/base/types.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_BOUNDING_BOX_H
-#define PARTICULATE_GEOMETRY_BOUNDING_BOX_H
+#ifndef particulate_geometry_bounding_box_h
+#define particulate_geometry_bounding_box_h
 
 #include <Eigen/Core>
 

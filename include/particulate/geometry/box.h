@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_BOX_H
-#define PARTICULATE_GEOMETRY_BOX_H
+#ifndef particulate_geometry_box_h
+#define particulate_geometry_box_h
 
 #include <particulate/geometry/shape.h>
 

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_CAPSULE_H
-#define PARTICULATE_GEOMETRY_CAPSULE_H
+#ifndef particulate_geometry_capsule_h
+#define particulate_geometry_capsule_h
 
 #include <particulate/geometry/shape.h>
 

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_CYLINDER_H
-#define PARTICULATE_GEOMETRY_CYLINDER_H
+#ifndef particulate_geometry_cylinder_h
+#define particulate_geometry_cylinder_h
 
 #include <particulate/geometry/shape.h>
 

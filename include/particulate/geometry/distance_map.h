@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_DISTANCE_MAP_H
-#define PARTICULATE_GEOMETRY_DISTANCE_MAP_H
+#ifndef particulate_geometry_distance_map_h
+#define particulate_geometry_distance_map_h
 
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/geometry/distance_map_data.h>

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_DISTANCE_MAP_DATA_H
-#define PARTICULATE_GEOMETRY_DISTANCE_MAP_DATA_H
+#ifndef particulate_geometry_distance_map_data_h
+#define particulate_geometry_distance_map_data_h
 
 #include <vector>
 

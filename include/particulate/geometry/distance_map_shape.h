@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_DISTANCE_MAP_SHAPE_H
-#define PARTICULATE_GEOMETRY_DISTANCE_MAP_SHAPE_H
+#ifndef particulate_geometry_distance_map_shape_h
+#define particulate_geometry_distance_map_shape_h
 
 #include <particulate/geometry/distance_map.h>
 #include <particulate/geometry/shape.h>

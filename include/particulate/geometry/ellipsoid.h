@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_ELLIPSOID_H
-#define PARTICULATE_GEOMETRY_ELLIPSOID_H
+#ifndef particulate_geometry_ellipsoid_h
+#define particulate_geometry_ellipsoid_h
 
 #include <particulate/geometry/shape.h>
 

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_GEOMETRY_ERROR_H
-#define PARTICULATE_GEOMETRY_GEOMETRY_ERROR_H
+#ifndef particulate_geometry_geometry_error_h
+#define particulate_geometry_geometry_error_h
 
 #include <stdexcept>
 #include <string>

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_HALF_SPACE_H
-#define PARTICULATE_GEOMETRY_HALF_SPACE_H
+#ifndef particulate_geometry_half_space_h
+#define particulate_geometry_half_space_h
 
 #include <particulate/geometry/shape.h>
 

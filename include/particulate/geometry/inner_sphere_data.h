@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_INNER_SPHERE_DATA_H
-#define PARTICULATE_GEOMETRY_INNER_SPHERE_DATA_H
+#ifndef particulate_geometry_inner_sphere_data_h
+#define particulate_geometry_inner_sphere_data_h
 
 #include <vector>
 

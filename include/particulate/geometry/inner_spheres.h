@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_INNER_SPHERES_H
-#define PARTICULATE_GEOMETRY_INNER_SPHERES_H
+#ifndef particulate_geometry_inner_spheres_h
+#define particulate_geometry_inner_spheres_h
 
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/geometry/distance_map.h>

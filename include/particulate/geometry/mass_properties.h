@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_MASS_PROPERTIES_H
-#define PARTICULATE_GEOMETRY_MASS_PROPERTIES_H
+#ifndef particulate_geometry_mass_properties_h
+#define particulate_geometry_mass_properties_h
 
 #include <particulate/geometry/pose.h>
 #include <particulate/geometry/triangle_mesh.h>

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_MESH_GENERATORS_H
-#define PARTICULATE_GEOMETRY_MESH_GENERATORS_H
+#ifndef particulate_geometry_mesh_generators_h
+#define particulate_geometry_mesh_generators_h
 
 #include <particulate/geometry/triangle_mesh.h>
 

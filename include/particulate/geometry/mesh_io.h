@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_MESH_IO_H
-#define PARTICULATE_GEOMETRY_MESH_IO_H
+#ifndef particulate_geometry_mesh_io_h
+#define particulate_geometry_mesh_io_h
 
 #include <particulate/geometry/triangle_mesh.h>
 

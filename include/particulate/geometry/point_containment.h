@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_POINT_CONTAINMENT_H
-#define PARTICULATE_GEOMETRY_POINT_CONTAINMENT_H
+#ifndef particulate_geometry_point_containment_h
+#define particulate_geometry_point_containment_h
 
 #include <particulate/geometry/point_hash_grid.h>
 #include <particulate/geometry/pose.h>

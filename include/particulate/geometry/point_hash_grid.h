@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_POINT_HASH_GRID_H
-#define PARTICULATE_GEOMETRY_POINT_HASH_GRID_H
+#ifndef particulate_geometry_point_hash_grid_h
+#define particulate_geometry_point_hash_grid_h
 
 #include <particulate/geometry/bounding_box.h>
 

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_POSE_H
-#define PARTICULATE_GEOMETRY_POSE_H
+#ifndef particulate_geometry_pose_h
+#define particulate_geometry_pose_h
 
 #include <particulate/geometry/bounding_box.h>
 

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_SHAPE_H
-#define PARTICULATE_GEOMETRY_SHAPE_H
+#ifndef particulate_geometry_shape_h
+#define particulate_geometry_shape_h
 
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/geometry/geometry_error.h>

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_SPHERE_H
-#define PARTICULATE_GEOMETRY_SPHERE_H
+#ifndef particulate_geometry_sphere_h
+#define particulate_geometry_sphere_h
 
 #include <particulate/geometry/shape.h>
 

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_TORUS_H
-#define PARTICULATE_GEOMETRY_TORUS_H
+#ifndef particulate_geometry_torus_h
+#define particulate_geometry_torus_h
 
 #include <particulate/geometry/shape.h>
 

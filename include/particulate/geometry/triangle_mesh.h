@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_TRIANGLE_MESH_H
-#define PARTICULATE_GEOMETRY_TRIANGLE_MESH_H
+#ifndef particulate_geometry_triangle_mesh_h
+#define particulate_geometry_triangle_mesh_h
 
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/geometry/pose.h>

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_TRIANGULATED_SURFACE_H
-#define PARTICULATE_GEOMETRY_TRIANGULATED_SURFACE_H
+#ifndef particulate_geometry_triangulated_surface_h
+#define particulate_geometry_triangulated_surface_h
 
 #include <particulate/geometry/shape.h>
 #include <particulate/geometry/triangle_mesh.h>

@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_CUDA_CONTAINMENT_ENGINE_H
-#define PARTICULATE_CUDA_CONTAINMENT_ENGINE_H
+#ifndef particulate_cuda_containment_engine_h
+#define particulate_cuda_containment_engine_h
 
 #include <particulate/cuda/containment_types.h>
 

@@ -5,8 +5,8 @@
 // any geometry header (it depends on nothing but the C++ standard library and,
 // optionally, the CUDA toolkit). They are grouped in one header because they
 // are passive data with no behaviour of their own.
-#ifndef PARTICULATE_CUDA_CONTAINMENT_TYPES_H
-#define PARTICULATE_CUDA_CONTAINMENT_TYPES_H
+#ifndef particulate_cuda_containment_types_h
+#define particulate_cuda_containment_types_h
 
 #include <cstdint>
 #include <vector>

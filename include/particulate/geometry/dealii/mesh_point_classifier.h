@@ -1,5 +1,5 @@
-#ifndef PARTICULATE_GEOMETRY_DEALII_MESH_POINT_CLASSIFIER_H
-#define PARTICULATE_GEOMETRY_DEALII_MESH_POINT_CLASSIFIER_H
+#ifndef particulate_geometry_dealii_mesh_point_classifier_h
+#define particulate_geometry_dealii_mesh_point_classifier_h
 
 #include <particulate/geometry/point_containment.h>
 #include <particulate/geometry/point_hash_grid.h>

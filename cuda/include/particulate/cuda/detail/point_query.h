@@ -10,8 +10,8 @@
 // -ffp-contract=off (see cuda/CMakeLists.txt), so GCC and Clang also round
 // every product and sum separately. The order of the operations is fixed by
 // the code, not left to the compiler, because no -ffast-math is used anywhere.
-#ifndef PARTICULATE_CUDA_DETAIL_POINT_QUERY_H
-#define PARTICULATE_CUDA_DETAIL_POINT_QUERY_H
+#ifndef particulate_cuda_detail_point_query_h
+#define particulate_cuda_detail_point_query_h
 
 #if defined(__CUDACC__)
 #  define PARTICULATE_HD __host__ __device__ __forceinline__
