@@ -327,8 +327,11 @@ main(int argc, char **argv)
   std::cout << "fuzz: cases are written to " << current_case << std::endl;
 
   std::vector<fs::path> cases;
+  // not the temporary copies that a running validation test writes next to
+  // a case (tests/validation/run_case_and_check.sh); they come and go
   for (const auto &entry : fs::recursive_directory_iterator(case_dir))
-    if (entry.path().extension() == ".prm")
+    if (entry.path().extension() == ".prm"
+        && entry.path().filename().string().rfind("_validation_", 0) != 0)
       cases.push_back(entry.path());
   std::sort(cases.begin(), cases.end());
   check(!cases.empty(), "no .prm files below " + case_dir.string());
