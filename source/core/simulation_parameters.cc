@@ -131,9 +131,10 @@ namespace particulate {
       prm.declare_entry("Interval",
                         std::to_string(defaults.interval),
                         Patterns::Integer(0),
-                        "Write ParaView files every this many time steps (0: "
-                        "only the last step). Time series (.dat) are written "
-                        "every step.");
+                        "Write ParaView files at the start, every this many "
+                        "time steps and at the last step (0: at the start "
+                        "and the last step only). Time series (.dat) are "
+                        "written every step.");
       prm.declare_entry("Write ParaView files",
                         flag_text(defaults.write_vtu),
                         Patterns::Bool(),

@@ -271,8 +271,9 @@ namespace particulate {
         "containment kernel on the GPU (float arithmetic; a node within "
         "about 1e-7 of the particle size from its surface may be "
         "classified differently than by cpu); needs a CUDA build and a "
-        "device. auto: cuda when a device is present and 'Covered nodes' "
-        "is 'inside', cpu otherwise.");
+        "device. auto: cuda when a device is present, 'Covered nodes' is "
+        "'inside' and every particle is a sphere (a disk in 2D), cpu "
+        "otherwise.");
       prm.declare_entry(
         "Covered nodes",
         to_string(defaults.covered_nodes),
