@@ -10,6 +10,22 @@
 
 namespace particulate {
   namespace fbm {
+    namespace {
+      /** Whether the file sets an entry of subsection @p section. */
+      bool
+      sets_any_entry(const core::InputOutline &outline,
+                     const std::string        &section)
+      {
+        for (const auto &statement : outline.statements())
+          if (statement.keyword == core::InputOutline::Keyword::set
+              && !statement.path.empty() && statement.path.front() == section)
+            return true;
+        return false;
+      }
+    } // namespace
+
+
+
     void
     ParticulateFlowParameters::declare(dealii::ParameterHandler &prm,
                                        const ParticleSetLayout  &layout)
@@ -65,6 +81,15 @@ namespace particulate {
           filename
           + ": subsection 'Checkpoint' asks for checkpoints, which only "
             "'particulate flow' runs write so far. Set both intervals to 0.");
+      if (flow.simulation.type
+            == core::SimulationParameters::Type::particulate_flow
+          && sets_any_entry(outline, "Forces"))
+        throw std::runtime_error(
+          outline.where({"Forces"})
+          + ": the drag and lift of a body-fitted obstacle, which 'fluid' "
+            "runs only compute. A particulate flow run writes each "
+            "particle's hydrodynamic force and torque to particle_<n>.dat; "
+            "remove the subsection.");
       if (flow.simulation.type == core::SimulationParameters::Type::fluid
           && particles.n_particles() > 0)
         throw std::runtime_error(
