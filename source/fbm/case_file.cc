@@ -87,6 +87,11 @@ namespace particulate {
                          up,
                          parameters.particles.symmetry_planes,
                          dim);
+        check_on_mirror_planes(parameters.particles.bodies,
+                               low,
+                               up,
+                               parameters.particles.symmetry_planes,
+                               dim);
       }
     } // namespace
 
@@ -113,10 +118,36 @@ namespace particulate {
 
 
     void
+    check_particles_suit_the_run(const ParticulateFlowParameters &parameters,
+                                 const std::string               &filename)
+    {
+      const ParticleParameters &particles = parameters.particles;
+      if (parameters.flow.time.scheme == core::TimeParameters::Scheme::steady
+          && (particles.any(ParticleMotion::free)
+              || particles.any(ParticleMotion::prescribed)))
+        throw std::runtime_error(
+          filename
+          + ": moving particles need a time-dependent scheme: set 'Scheme' "
+            "in subsection 'Time' to 'fractional-step theta' (or set 'Motion "
+            "= fixed' for every particle).");
+      if (particles.n_particles() == 0)
+        throw std::runtime_error(
+          filename
+          + ": a 'particulate flow' run needs at least one particle: add a "
+            "subsection 'Particle 0' (or a 'Particle file', 'Lattice' or "
+            "'Random fill') to subsection 'Particles'.");
+    }
+
+
+
+    void
     check_case_against_mesh(const ParticulateFlowParameters &parameters,
                             const std::string               &filename,
                             MPI_Comm                         comm)
     {
+      if (parameters.flow.simulation.type
+          == core::SimulationParameters::Type::particulate_flow)
+        check_particles_suit_the_run(parameters, filename);
       naming_the_file(filename, [&]() {
         if (parameters.flow.simulation.dimension == 2)
           check_against_coarse_mesh<2>(parameters, filename, comm);

@@ -178,6 +178,35 @@ namespace particulate {
 
 
     void
+    check_on_mirror_planes(const std::vector<ParticleDescription> &particles,
+                           const Eigen::Vector3d                  &lower,
+                           const Eigen::Vector3d                  &upper,
+                           const std::array<bool, 6> &mirror_planes,
+                           const unsigned int         dim)
+    {
+      for (unsigned int f = 0; f < 2 * dim; ++f)
+        if (mirror_planes[f])
+          {
+            const unsigned int a     = f / 2;
+            const double       plane = f % 2 ? upper[a] : lower[a];
+            for (unsigned int i = 0; i < particles.size(); ++i)
+              if (std::abs(particles[i].position[a] - plane)
+                  > 1e-9 * (upper[a] - lower[a]))
+                {
+                  std::ostringstream message;
+                  message << particles[i].origin << ": particle " << i
+                          << " does not lie on the mirror plane "
+                          << "xyz"[a] << " = " << plane
+                          << " of 'Symmetry planes'; put its centre there or "
+                             "remove the plane.";
+                  throw std::runtime_error(message.str());
+                }
+          }
+    }
+
+
+
+    void
     check_contact_clearance(const rigid::World               &world,
                             const std::vector<rigid::BodyId> &particle_ids,
                             const std::vector<ParticleDescription> &particles,

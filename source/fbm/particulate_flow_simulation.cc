@@ -4,6 +4,7 @@
 #include <particulate/fbm/body_adapted_mesh.h>
 #include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/body_state_guard.h>
+#include <particulate/fbm/case_file.h>
 #include <particulate/fbm/energy_balance.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
@@ -216,20 +217,7 @@ namespace particulate {
     {
       const auto &particle_p = parameters.particles;
       const auto &time_p     = parameters.flow.time;
-      if (time_p.scheme == core::TimeParameters::Scheme::steady
-          && (particle_p.any(ParticleMotion::free)
-              || particle_p.any(ParticleMotion::prescribed)))
-        throw std::runtime_error(
-          parameter_file
-          + ": moving particles need a time-dependent scheme: set 'Scheme' "
-            "in subsection 'Time' to 'fractional-step theta' (or set 'Motion "
-            "= fixed' for every particle).");
-      if (particle_p.n_particles() == 0)
-        throw std::runtime_error(
-          parameter_file
-          + ": a 'particulate flow' run needs at least one particle: add a "
-            "subsection 'Particle 0' (or a 'Particle file', 'Lattice' or "
-            "'Random fill') to subsection 'Particles'.");
+      check_particles_suit_the_run(parameters, parameter_file);
       run_   = std::make_unique<Run>(parameters, parameter_file, communicator);
       Run &r = *run_;
 
@@ -320,23 +308,11 @@ namespace particulate {
                        upper,
                        particle_p.symmetry_planes,
                        dim);
-      // mirror planes: the centres lie on them
+      check_on_mirror_planes(
+        particle_p.bodies, lower, upper, particle_p.symmetry_planes, dim);
       for (unsigned int f = 0; f < 2 * dim; ++f)
         if (particle_p.symmetry_planes[f])
-          {
-            r.n_images *= 2;
-            const unsigned int a     = f / 2;
-            const double       plane = f % 2 ? r.box_upper[a] : r.box_lower[a];
-            for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
-              if (std::abs(particle_p.bodies[i].position[a] - plane)
-                  > 1e-9 * (r.box_upper[a] - r.box_lower[a]))
-                throw std::runtime_error(
-                  particle_p.bodies[i].origin + ": particle "
-                  + std::to_string(i) + " does not lie on the mirror plane "
-                  + "xyz"[a] + " = " + std::to_string(plane)
-                  + " of 'Symmetry planes'; put its centre there or remove "
-                    "the plane.");
-          }
+          r.n_images *= 2;
     }
 
 

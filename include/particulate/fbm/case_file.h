@@ -26,10 +26,22 @@ namespace particulate {
                    const std::string        &overrides = "");
 
     /**
+     * The checks of a 'particulate flow' case that concern its particles
+     * as a whole: it has at least one, and moving (free or prescribed) ones
+     * only with a time-dependent scheme.
+     * @throw std::runtime_error naming @p filename and what to change
+     */
+    void
+    check_particles_suit_the_run(const ParticulateFlowParameters &parameters,
+                                 const std::string               &filename);
+
+    /**
      * The checks of a case that need its coarse mesh, on every rank of
      * @p comm: the expressions have the dimension's number of components,
-     * every boundary id has a condition and is on the mesh, and every
-     * particle lies inside the mesh's bounding box. Together with
+     * every boundary id has a condition and is on the mesh, every
+     * particle lies inside the mesh's bounding box and on each of its
+     * mirror planes, and (check_particles_suit_the_run) a particulate flow
+     * has particles it can move. Together with
      * read_case_file() this is what `particulate --validate` does.
      * @throw std::runtime_error naming the file and the entry or particle
      */

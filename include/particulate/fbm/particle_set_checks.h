@@ -39,6 +39,22 @@ namespace particulate {
                      const unsigned int                      dim);
 
     /**
+     * Refuse a particle whose centre is off one of the @p mirror_planes
+     * (x-, x+, y-, y+, z-, z+ of the box [lower, upper]): a symmetric
+     * set-up computes the part of each body on one side of the plane and
+     * mirrors it, which describes the body only if the plane cuts it
+     * through its centre. Tolerance 1e-9 of the box's extent.
+     * @throw std::runtime_error naming the particle, where it was described,
+     *   and the plane
+     */
+    void
+    check_on_mirror_planes(const std::vector<ParticleDescription> &particles,
+                           const Eigen::Vector3d                  &lower,
+                           const Eigen::Vector3d                  &upper,
+                           const std::array<bool, 6> &mirror_planes,
+                           const unsigned int         dim);
+
+    /**
      * Refuse a free particle that starts closer than @p clearance (the
      * rigid engine's contact distance) to another particle or to a domain
      * wall: the contact model holds surfaces that far apart, so it would
