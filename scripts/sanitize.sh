@@ -3,7 +3,7 @@
 # their tests with AddressSanitizer and UndefinedBehaviorSanitizer, and runs
 # the default test set (ctest -LE 'validation|performance', as CI). Any
 # sanitizer finding aborts the test that made it, and the script exits
-# non-zero. See doc/developer.md, section "Sanitizers".
+# non-zero. See doc/developer/checks.md, section "Sanitizers".
 #
 # Usage: scripts/sanitize.sh [build-dir] [extra cmake arguments]
 #   build-dir   default build-sanitize (relative to the repository root)

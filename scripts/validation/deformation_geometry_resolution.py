@@ -5,10 +5,10 @@ Usage:
     deformation_geometry_resolution.py FOLDER [--level L] [--doc DOC_DIR]
 
 FOLDER is what `validation_deformation_geometry_resolution SURFACE FOLDER
-LEVELS` wrote. Prints the table of doc/deformation.md and, with --doc,
-writes DOC_DIR/deformation-geometry-slice.png: the mesh cut through the
-middle of the body at level L, not adapted and adapted with Laplace-kappa,
-with the body's own section in red.
+LEVELS` wrote. Prints the table of doc/validation/geometry-resolution.md
+and, with --doc, writes DOC_DIR/deformation-geometry-slice.png: the mesh cut
+through the middle of the body at level L, not adapted and adapted with
+Laplace-kappa, with the body's own section in red.
 """
 import argparse
 import os

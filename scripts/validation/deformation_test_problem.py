@@ -6,7 +6,7 @@ Usage:
 
 FOLDER is what `validation_deformation_test_problem FOLDER LEVEL` wrote:
 test-problem.dat and the level-5 grids (gnuplot format). Prints the table
-of doc/deformation.md and, with --doc, writes
+of doc/validation/deformation-test-problem.md and, with --doc, writes
     DOC_DIR/deformation-grids.png            deformed level-5 grids
     DOC_DIR/deformation-equidistribution.png error against the cell count
 """

@@ -16,6 +16,11 @@ Events (particle 0 starts on top, particle 1 below it):
 Also prints the smallest gap between the disks and between a disk and a wall
 over the run (overlap would be negative) and writes dkt-paths.png,
 dkt-gap.png, dkt-velocity.png and dkt.dat into --doc.
+
+With --max-tumbling-time T it checks the sequence (exit status 1 if a check
+fails): the three events happen, in the order drafting, kissing, tumbling,
+tumbling by T, and no disk overlaps the other or a wall by more than
+--max-overlap percent of the radius (default 1).
 """
 import argparse
 import os
@@ -50,6 +55,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("folder")
     parser.add_argument("--doc", default=None, help="folder for plots and table")
+    parser.add_argument("--label", default=None, help="name of the run (unused)")
+    parser.add_argument("--max-tumbling-time", type=float, default=None,
+                        help="check the events; tumbling by this time [s]")
+    parser.add_argument("--max-overlap", type=float, default=1.0,
+                        help="bound on overlaps [%% of the radius]")
     args = parser.parse_args()
 
     a = read_series(os.path.join(args.folder, "particle_0.dat"))
@@ -90,6 +100,14 @@ def main():
     print(f"smallest gap between the disks {gap.min():.4g} m "
           f"({gap.min() / r * 100:.1f} % of the radius; negative = overlap), "
           f"disk-wall {wall_gap:.4g} m; end of run t = {t[-1]:.3f} s")
+
+    if args.max_tumbling_time is not None:
+        failures = check_sequence(t, draft, kiss, tumble, min(gap.min(), wall_gap),
+                                  r, args)
+        if failures:
+            print("\n".join("FAILED: " + f for f in failures))
+            sys.exit(1)
+        print("drafting, kissing and tumbling in order, without overlap: ok")
 
     if args.doc is None:
         return
@@ -146,6 +164,27 @@ def main():
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(args.doc, "dkt-velocity.png"), dpi=120)
+
+
+def check_sequence(t, draft, kiss, tumble, smallest_gap, r, args):
+    """The failed checks of the event sequence, as lines."""
+    failures = []
+    if kiss is None:
+        failures.append("the disks never touch (no kissing)")
+    elif not t[draft] < t[kiss]:
+        failures.append("drafting does not come before kissing")
+    if tumble is None:
+        failures.append("the pair never turns over (no tumbling)")
+    else:
+        if kiss is not None and not t[kiss] < t[tumble]:
+            failures.append("kissing does not come before tumbling")
+        if t[tumble] > args.max_tumbling_time:
+            failures.append(f"tumbling at t = {t[tumble]:.3f} s, after "
+                            f"{args.max_tumbling_time} s")
+    if smallest_gap < -args.max_overlap / 100 * r:
+        failures.append(f"an overlap of {-smallest_gap:.3g} m, more than "
+                        f"{args.max_overlap} % of the radius")
+    return failures
 
 
 if __name__ == "__main__":

@@ -3,7 +3,8 @@
 
 Usage:
     oscillating_cylinder.py LABEL=PATH [LABEL=PATH ...] [--doc DOC_DIR]
-                            [--name NAME]
+                            [--name NAME] [--max-peak-error P]
+                            [--max-tv-ratio R]
 
 PATH is either the output folder of a `particulate` run of
 prm/oscillating-cylinder/*.prm (its particle_0.dat holds the force F_x, F_y
@@ -19,9 +20,15 @@ published +3.24 / -3.26 (Wan & Turek), raw and of the curve averaged over
 variation of c_d over the period (how oscillatory the curve is). With
 --doc writes DOC_DIR/NAME-drag.png and NAME-lift.png (NAME defaults to
 oscillating-cylinder).
+
+The checks (exit status 1 if one fails): with --max-peak-error, every
+complete period of every run that is not body-fitted has the extrema of its
+0.1 s average within P % of those of the body-fitted reference's same
+period; with --max-tv-ratio, its TV at most R times the reference's.
 """
 import argparse
 import os
+import sys
 
 import matplotlib
 
@@ -116,17 +123,32 @@ def main():
     parser.add_argument("--doc", help="folder for the figures")
     parser.add_argument("--name", default="oscillating-cylinder",
                         help="file name stem of the figures")
+    parser.add_argument("--max-peak-error", type=float, default=None,
+                        help="bound [%%] on the 0.1 s averaged extrema against "
+                        "the body-fitted reference's")
+    parser.add_argument("--max-tv-ratio", type=float, default=None,
+                        help="bound on TV(c_d) / the body-fitted reference's")
+    parser.add_argument("--reference", default=None,
+                        help="the body-fitted reference's forces.dat (the same "
+                        "as giving it first among the runs)")
+    parser.add_argument("--label", default=None,
+                        help="the label of a single run given as a folder "
+                        "(as the validation tests pass it)")
     args = parser.parse_args()
 
     runs = []
+    if args.reference:
+        runs.append(("body-fitted", args.reference)
+                    + coefficients(args.reference))
     for item in args.runs:
-        label, path = item.split("=", 1)
+        label, path = (item.split("=", 1) if "=" in item
+                       else (args.label or os.path.basename(item), item))
         runs.append((label, path) + coefficients(path))
-    reference_tv = {}
+    reference = {}
     for label, _, t, c_d, c_l, fitted in runs:
-        if fitted and not reference_tv:
-            reference_tv = {p["period"]: p["tv"]
-                            for p in per_period(t, c_d, c_l)}
+        if fitted and not reference:
+            reference = {p["period"]: p for p in per_period(t, c_d, c_l)}
+    reference_tv = {k: p["tv"] for k, p in reference.items()}
 
     print("| run | period (until t) | max c_d (pub. +3.24) | min c_d "
           "(pub. -3.26) | 0.1 s average: max / min | max abs c_l | TV(c_d) "
@@ -142,6 +164,8 @@ def main():
                   f"{p['smooth_max']:+.3f} ({100 * (p['smooth_max'] / PUBLISHED_MAX - 1):+.1f} %) / "
                   f"{p['smooth_min']:+.3f} ({100 * (p['smooth_min'] / PUBLISHED_MIN - 1):+.1f} %) | "
                   f"{p['lift']:.3f} | {p['tv']:.2f} | {ratio:.2f} |")
+
+    failures = check_against_reference(runs, reference, args)
 
     if args.doc:
         os.makedirs(args.doc, exist_ok=True)
@@ -166,6 +190,44 @@ def main():
                                      f"{args.name}-{name}.png"),
                         dpi=120)
             plt.close(fig)
+    if failures:
+        print("\n".join(failures))
+        sys.exit(1)
+
+
+def check_against_reference(runs, reference, args):
+    """The failed checks of --max-peak-error and --max-tv-ratio, as lines."""
+    if args.max_peak_error is None and args.max_tv_ratio is None:
+        return []
+    if not reference:
+        sys.exit("the checks need a body-fitted reference run (its forces.dat)")
+    failures, checked = [], 0
+    for label, _, t, c_d, c_l, fitted in runs:
+        if fitted:
+            continue
+        for p in per_period(t, c_d, c_l):
+            ref = reference.get(p["period"])
+            if ref is None or p["end"] < p["period"] * PERIOD - 1e-6:
+                continue  # an incomplete period, or one the reference lacks
+            checked += 1
+            for key in ("smooth_max", "smooth_min"):
+                error = 100 * abs(p[key] / ref[key] - 1)
+                ok = args.max_peak_error is None or error <= args.max_peak_error
+                print(f"{label}, period {p['period']}: {key} {p[key]:+.3f} against "
+                      f"{ref[key]:+.3f}, {error:.1f} % {'ok' if ok else 'FAILED'}")
+                if not ok:
+                    failures.append(f"{label}: {key} of period {p['period']} "
+                                    f"{error:.1f} % off the body-fitted one")
+            ratio = p["tv"] / ref["tv"]
+            ok = args.max_tv_ratio is None or ratio <= args.max_tv_ratio
+            print(f"{label}, period {p['period']}: TV ratio {ratio:.2f} "
+                  f"{'ok' if ok else 'FAILED'}")
+            if not ok:
+                failures.append(f"{label}: TV of period {p['period']} is "
+                                f"{ratio:.2f} times the body-fitted one")
+    if checked == 0:
+        failures.append("no complete period to check")
+    return failures
 
 
 if __name__ == "__main__":

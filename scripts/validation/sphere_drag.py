@@ -61,16 +61,25 @@ def main():
     parser.add_argument("--plot-tags", nargs="*",
                         help="the tagged runs of the figure's second panel "
                              "(default: all; the table has every run)")
+    parser.add_argument("--label", help="name of the last run (unused)")
+    parser.add_argument("--check-ratio", nargs="*", default=[],
+                        metavar="RUN=LOW:HIGH",
+                        help="check that the moving/fixed ratio of the run "
+                             "(its folder's name) lies in [LOW, HIGH]; exit "
+                             "status 1 if not")
     args = parser.parse_args()
 
     runs = {}
     for folder in args.folders:
         name = os.path.basename(os.path.normpath(folder))
-        m = re.match(r"(fixed|moving)-sphere-r(\d+)(?:-(.+))?$", name)
+        # <frame>-sphere[-<variant>]-r<level>[-<tag>]: the variant is the
+        # case file's (moving-sphere-carried.prm), the tag sphere_drag.sh's
+        m = re.match(r"(fixed|moving)-sphere(?:-([a-z]+))?-r(\d+)(?:-(.+))?$", name)
         if not m or not os.path.exists(os.path.join(folder, "particle_0.dat")):
             print(f"skipped {folder} (not a finished sphere_drag.sh run)")
             continue
-        frame, level, tag = m.group(1), int(m.group(2)), m.group(3) or ""
+        frame, level = m.group(1), int(m.group(3))
+        tag = "-".join(x for x in (m.group(2), m.group(4)) if x)
         a = np.loadtxt(os.path.join(folder, "particle_0.dat"), ndmin=2)
         t, f_z = a[:, 0], a[:, 12]
         inside = (t > WINDOW[0] + 1e-9) & (t <= WINDOW[1] + 1e-9)
@@ -120,6 +129,7 @@ def main():
             f"| {ratio} |")
     table = "\n".join(lines)
     print(table)
+    failures = check_ratios(runs, args.check_ratio)
 
     if args.doc and runs:
         import matplotlib  # only for the figure
@@ -168,6 +178,38 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(args.doc, "sphere-drag.png"), dpi=120)
         print(f"wrote {args.doc}/sphere-drag.png and sphere-drag.dat")
+    if failures:
+        print("\n".join("FAILED: " + f for f in failures))
+        sys.exit(1)
+
+
+def moving_fixed_ratio(runs, key):
+    """The moving run's window mean over the fixed run's of its level and
+    tag, or of its level without a tag; None without such a fixed run."""
+    _, level, tag = key
+    fixed = runs.get(("fixed", level, tag)) or runs.get(("fixed", level, ""))
+    return runs[key]["mean"] / fixed["mean"] if fixed else None
+
+
+def check_ratios(runs, bounds):
+    """The failed --check-ratio bounds, as lines (each printed as checked)."""
+    failures = []
+    by_name = {os.path.basename(os.path.normpath(r["folder"])): key
+               for key, r in runs.items()}
+    for item in bounds:
+        name, band = item.split("=", 1)
+        low, high = map(float, band.split(":"))
+        key = by_name.get(name)
+        ratio = moving_fixed_ratio(runs, key) if key and key[0] == "moving" else None
+        if ratio is None:
+            failures.append(f"{name}: no moving run with a fixed run of its level")
+            continue
+        ok = low <= ratio <= high
+        print(f"{name}: moving/fixed {ratio:.3f} in [{low}, {high}]: "
+              f"{'ok' if ok else 'FAILED'}")
+        if not ok:
+            failures.append(f"{name}: moving/fixed {ratio:.3f} outside [{low}, {high}]")
+    return failures
 
 
 if __name__ == "__main__":

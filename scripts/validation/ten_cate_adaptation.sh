@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Sedimentation with mesh adaptation (thesis §6.4, doc/deformation.md
-# "Sedimentation with Laplace-kappa"): a ten Cate case on the regular mesh
+# Sedimentation with mesh adaptation (thesis §6.4,
+# doc/validation/ten-cate-laplace-kappa.md): a ten Cate case on the regular mesh
 # at Refinements = 0 and 1 against the mesh at Refinements = 0 adapted to the
 # sphere by Laplace-kappa every step (Width = one diameter, the other entries
 # at their defaults), with 'Covered nodes = inside', and all

@@ -39,10 +39,11 @@ namespace {
            "                                     default and valid values\n"
            "  particulate --print-parameters=markdown   the same as the "
            "Markdown reference\n"
-           "                                            (doc/parameters.md)\n"
+           "                                            "
+           "(doc/user/parameters.md)\n"
            "  particulate --help                 this text\n\n"
            "Cases live in prm/<case>/<case>.prm; see README.md and "
-           "doc/parameters.md.\n";
+           "doc/user/parameters.md.\n";
   }
 
   template <int dim>

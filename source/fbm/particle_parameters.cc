@@ -219,7 +219,7 @@ namespace particulate {
         "momentum of the fluid in the cut cells and of the nodes the body "
         "covers during a step, which the stress integral leaves out; the "
         "sum is the reaction of the discrete momentum equation at the "
-        "covered nodes (doc/fbm.md, 'Force integral').");
+        "covered nodes (doc/developer/fbm.md, 'Force integral').");
       prm.declare_entry("Contact solver",
                         rigid::to_string(defaults.contact_solver),
                         Patterns::Selection(
@@ -285,7 +285,7 @@ namespace particulate {
         "outside by less than half the local node spacing (a quarter of the "
         "shortest edge of the cells around the node); the flow sees a body "
         "enlarged by up to that. The two bracket the body's drag from below "
-        "and above on coarse meshes (doc/fbm.md, 'Which nodes'). halfway: the nodes outside by less than a quarter "
+        "and above on coarse meshes (doc/developer/fbm.md, 'Which nodes'). halfway: the nodes outside by less than a quarter "
         "of the local node spacing, half the reach of nearest. The "
         "cuda containment backend supports 'inside' only.");
       prm.leave_subsection();

@@ -36,7 +36,8 @@ namespace particulate {
                 << " m at its centre). The fictitious boundary resolves them "
                    "coarsely: the drag of a fixed cylinder is 2.6 % low at 4 "
                    "cells per diameter and within 1.3 % from 8 on "
-                   "(doc/fbm.md). Refine the mesh around the particles "
+                   "(doc/validation/dfg-2d-1-fbm.md). Refine the mesh around "
+                   "the particles "
                    "('Refinements' in subsection 'Mesh', or subsection "
                    "'Mesh deformation') if their forces matter.";
         return message.str();
@@ -73,7 +74,8 @@ namespace particulate {
                 << "), where its acceleration grows from step to step. A "
                    "disk of ratio 0.5 with C = 0 flipped its acceleration "
                    "in every step at 10 ms and was smooth with C = 1 "
-                   "(doc/fbm.md, \"Stability for light particles\"). Set "
+                   "(doc/developer/fbm.md, \"Stability for light particles\"). "
+                   "Set "
                    "'Added mass coefficient' in subsection 'Particles' to "
                    "at least "
                 << (added_mass - density_ratios[lightest]) / 2.

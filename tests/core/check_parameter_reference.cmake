@@ -1,5 +1,5 @@
-# Fail when doc/parameters.md differs from what the code generates.
-# Called by CTest with -DEXE=<particulate> -DDOC=<doc/parameters.md>.
+# Fail when doc/user/parameters.md differs from what the code generates.
+# Called by CTest with -DEXE=<particulate> -DDOC=<doc/user/parameters.md>.
 execute_process(COMMAND "${EXE}" --print-parameters=markdown
   RESULT_VARIABLE result OUTPUT_VARIABLE generated)
 if(NOT result EQUAL 0)
@@ -7,6 +7,6 @@ if(NOT result EQUAL 0)
 endif()
 file(READ "${DOC}" committed)
 if(NOT generated STREQUAL committed)
-  message(FATAL_ERROR "doc/parameters.md is stale: run "
+  message(FATAL_ERROR "doc/user/parameters.md is stale: run "
     "scripts/generate-parameter-doc.sh and commit the result.")
 endif()

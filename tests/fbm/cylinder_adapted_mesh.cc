@@ -15,8 +15,8 @@
 //    the caps the run finished with an axial force 130 times the drag,
 //    without them its first step took 70 s instead of 3 s and the second
 //    did not finish in 2 minutes (doc/history/fbm-and-deformation.md,
-//    "3D slab, what stalls it"; the open problem: doc/deformation.md,
-//    "Open questions").
+//    "3D slab, what stalls it"; the open problem:
+//    doc/developer/deformation.md, "Open questions").
 
 #include <particulate/core/mesh.h>
 #include <particulate/fbm/body_adapted_mesh.h>

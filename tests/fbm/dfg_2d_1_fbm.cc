@@ -4,9 +4,10 @@
 // over the cells the cylinder cuts. The FBM describes the cylinder only to
 // within a cell, so its drag error is first order in h/D; with 8 cells per
 // diameter (refinement 4) we require 2.5 % (the measured error is 1.2 %,
-// doc/fbm.md), and the force must not depend on where the solver stops.
-// Lift is a difference of large pressure integrals on either side of the
-// cylinder and is not resolved by the FBM at this level (doc/fbm.md).
+// doc/validation/dfg-2d-1-fbm.md), and the force must not depend on where the
+// solver stops. Lift is a difference of large pressure integrals on either side
+// of the cylinder and is not resolved by the FBM at this level
+// (doc/validation/dfg-2d-1-fbm.md).
 // Usage: fbm_dfg_2d_1 [refinements]
 
 #include <particulate/fbm/particulate_flow_simulation.h>

@@ -5,7 +5,8 @@
 //   is not counted; 4 cells exactly pass;
 // - coupling stability: the explicit coupling is unstable below
 //   rho_p / rho_f = C_a - 2 C. With C = 0 a disk (C_a = 1) of ratio 0.5
-//   is warned about (the measured unstable case of doc/fbm.md) with the
+//   is warned about (the measured unstable case of doc/developer/fbm.md)
+//   with the
 //   coefficient it needs, 0.25; ratio 1.1 is not; a sphere (C_a = 1/2) of
 //   ratio 0.5 is at the limit and passes; with the default C = 1 no ratio
 //   is warned about.

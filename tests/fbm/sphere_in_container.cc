@@ -7,14 +7,15 @@
 //    sees a smaller body and the drag must come out too low;
 //  - 'nearest' also marks the nodes less than half a node spacing outside:
 //    the flow sees a larger body and the drag must come out too high.
-// The closed form must lie between the two (doc/fbm.md, "Which nodes").
+// The closed form must lie between the two (doc/developer/fbm.md, "Which
+// nodes").
 //  - 'halfway' marks the nodes less than a quarter of a node spacing
 //    outside, half the reach of 'nearest': it marks at least the nodes of
 //    'inside' and at most those of 'nearest', so its drag must lie between
 //    theirs. (On this mesh the nodes lie on spherical shells, and none lies
 //    within a quarter spacing outside the sphere: halfway marks what inside
 //    marks. The ten Cate cases on Cartesian meshes show the difference,
-//    doc/fbm.md.)
+//    doc/developer/fbm.md.)
 // Usage: fbm_sphere_in_container [refinements]
 
 #include <particulate/fbm/particulate_flow_simulation.h>

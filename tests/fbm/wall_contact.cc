@@ -3,8 +3,8 @@
 // engine's contact: prm/settling-disk on a 4-cells-per-diameter mesh,
 // released two cells above the floor and thrown down at 2 cm/s. Without the
 // contact distance the film under the disk drops below a cell, the squeeze
-// pressure spikes and the linear solver breaks down (doc/fbm.md, "Near
-// contact"); with it the run finishes, and at rest the contact force and
+// pressure spikes and the linear solver breaks down (doc/developer/fbm.md,
+// "Near contact"); with it the run finishes, and at rest the contact force and
 // the fluid force together carry the buoyancy-corrected weight.
 
 #include <particulate/fbm/particulate_flow_simulation.h>

@@ -11,15 +11,15 @@
 // quarter of the steps (the lagged added-mass force makes it flip every
 // step) or when the run breaks down; a stable run approaches its terminal
 // velocity smoothly. Writes fbm_added_mass_study.dat and prints the table
-// of doc/fbm.md. Gate: every run with C = 1 is stable, with and without the
-// predicted interface, and its velocity at t = 0.05 s converges as the step
-// shrinks: the 1 ms run is closer to the 0.25 ms run than the 10 ms run is
-// (the coupling's splitting error is O(dt)).
+// of doc/developer/fbm.md. Gate: every run with C = 1 is stable, with and
+// without the predicted interface, and its velocity at t = 0.05 s converges as
+// the step shrinks: the 1 ms run is closer to the 0.25 ms run than the 10 ms
+// run is (the coupling's splitting error is O(dt)).
 //
-// Model (doc/fbm.md): were the whole added-mass force lagged, the update
-// (m + C rho_f V) a_new = dM g + (C rho_f V - m_a,true) a_old would amplify
-// by |C rho_f V - m_a,true| / (m + C rho_f V), and C = 0 would fail for a
-// disk at ratio 0.5. The study measures what the FBM coupling really does
+// Model (doc/developer/fbm.md): were the whole added-mass force lagged, the
+// update (m + C rho_f V) a_new = dM g + (C rho_f V - m_a,true) a_old would
+// amplify by |C rho_f V - m_a,true| / (m + C rho_f V), and C = 0 would fail for
+// a disk at ratio 0.5. The study measures what the FBM coupling really does
 // (C = 0 turned out stable there too); only C = 1 is gated.
 
 #include <particulate/fbm/particulate_flow_simulation.h>

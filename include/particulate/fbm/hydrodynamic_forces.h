@@ -31,10 +31,10 @@ namespace particulate {
      * integrand with (x - X_i) alpha_i replaced by its Q2 interpolant, i.e.
      * the discrete momentum equation tested with the rigid rotation at the
      * covered nodes. Why: the pressure modes of cut cells that the
-     * divergence of the free velocities does not see (doc/fbm.md,
-     * "Pressure") are then invisible to the torque as they are to the
-     * force; with the integrand as written, a 3D cylinder spanning a slab
-     * saw a torque a hundred times the 2D disk's from them.
+     * divergence of the free velocities does not see
+     * (doc/developer/fbm.md, "Pressure") are then invisible to the torque as
+     * they are to the force; with the integrand as written, a 3D cylinder
+     * spanning a slab saw a torque a hundred times the 2D disk's from them.
      *
      * @param centres the reference points X_i of the torques [m]
      */

@@ -16,7 +16,8 @@ namespace particulate {
        * The fewest cells across a particle's size (the smallest edge of its
        * bounding box) below which a warning is given: the drag of the
        * fixed FBM cylinder of DFG 2D-1 is 2.6 % low at 4 cells per
-       * diameter and within 1.3 % from 8 on (doc/fbm.md).
+       * diameter and within 1.3 % from 8 on
+       * (doc/validation/dfg-2d-1-fbm.md).
        */
       constexpr double minimum_cells_across = 4.;
 
@@ -32,7 +33,8 @@ namespace particulate {
       /**
        * The explicit coupling with the added-mass coefficient C amplifies
        * accelerations per step by |C rho_f V - m_a| / (m + C rho_f V)
-       * (doc/fbm.md, "Stability for light particles"): it is unstable
+       * (doc/developer/fbm.md, "Stability for light particles"): it is
+       * unstable
        * where the fluid's added mass m_a = C_a rho_f V exceeds
        * m + 2 C rho_f V, i.e. where rho_p / rho_f < C_a - 2 C, with C_a =
        * 1/2 for a sphere and 1 for a disk, more in confinement.
