@@ -308,8 +308,11 @@ namespace particulate {
                        upper,
                        particle_p.symmetry_planes,
                        dim);
-      check_on_mirror_planes(
-        particle_p.bodies, lower, upper, particle_p.symmetry_planes, dim);
+      check_on_mirror_planes(particle_p.bodies,
+                             lower,
+                             upper,
+                             particle_p.symmetry_planes,
+                             dim);
       for (unsigned int f = 0; f < 2 * dim; ++f)
         if (particle_p.symmetry_planes[f])
           r.n_images *= 2;

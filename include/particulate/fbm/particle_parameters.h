@@ -64,8 +64,9 @@ namespace particulate {
       /// those of the particle moved and turned to the middle of the step
       bool midpoint_interface_position = true;
       /// 'Force integral = stress and inertia': the loads include the
-      /// momentum of the fluid in the cut cells (fluid_inertia_loads)
-      bool force_includes_fluid_inertia = false;
+      /// momentum of the fluid in the cut cells (fluid_inertia_loads), so
+      /// that body and fluid exchange momentum exactly
+      bool force_includes_fluid_inertia = true;
       /// contact handling
       rigid::ContactSolverType contact_solver
         = rigid::ContactSolverType::sequential_impulses;
