@@ -1,3 +1,4 @@
+#include <particulate/core/choice_names.h>
 #include <particulate/core/parameter_text.h>
 #include <particulate/cuda/containment_engine.h>
 #include <particulate/fbm/particle_parameters.h>
@@ -74,37 +75,14 @@ namespace particulate {
                + core::number_text(g[2]);
       }
 
-      const std::array<std::pair<CoveredNodes, std::string>, 3>
-        covered_nodes_names = {{{CoveredNodes::inside, "inside"},
-                                {CoveredNodes::halfway, "halfway"},
-                                {CoveredNodes::nearest, "nearest"}}};
-      const std::array<std::pair<ContainmentBackend, std::string>, 3>
-        backend_names = {{{ContainmentBackend::automatic, "auto"},
-                          {ContainmentBackend::cpu, "cpu"},
-                          {ContainmentBackend::cuda, "cuda"}}};
-
-      /// the choice named @p name in @p names (a validated selection)
-      template <typename Choice, std::size_t n>
-      Choice
-      choice_named(const std::array<std::pair<Choice, std::string>, n> &names,
-                   const std::string                                   &name)
-      {
-        for (const auto &[choice, text] : names)
-          if (text == name)
-            return choice;
-        throw std::logic_error("'" + name + "' passed a selection pattern");
-      }
-
-      template <typename Choice, std::size_t n>
-      std::string
-      name_of(const std::array<std::pair<Choice, std::string>, n> &names,
-              const Choice                                         choice)
-      {
-        for (const auto &[c, text] : names)
-          if (c == choice)
-            return text;
-        throw std::logic_error("a choice without a name");
-      }
+      const core::ChoiceNames<CoveredNodes> covered_nodes_names
+        = {{CoveredNodes::inside, "inside"},
+           {CoveredNodes::halfway, "halfway"},
+           {CoveredNodes::nearest, "nearest"}};
+      const core::ChoiceNames<ContainmentBackend> backend_names
+        = {{ContainmentBackend::automatic, "auto"},
+           {ContainmentBackend::cpu, "cpu"},
+           {ContainmentBackend::cuda, "cuda"}};
 
       /**
        * subsection 'Particles / Experimental': coupling variants kept to
@@ -146,7 +124,7 @@ namespace particulate {
     std::string
     to_string(const CoveredNodes choice)
     {
-      return name_of(covered_nodes_names, choice);
+      return core::name_of(covered_nodes_names, choice);
     }
 
 
@@ -154,7 +132,7 @@ namespace particulate {
     std::string
     to_string(const ContainmentBackend choice)
     {
-      return name_of(backend_names, choice);
+      return core::name_of(backend_names, choice);
     }
 
 
@@ -264,7 +242,7 @@ namespace particulate {
       prm.declare_entry(
         "Containment backend",
         to_string(defaults.containment_backend),
-        Patterns::Selection("auto|cpu|cuda"),
+        Patterns::Selection(core::selection_of(backend_names)),
         "How the velocity nodes inside the particles are found every step. "
         "cpu: a hash grid over the nodes and the particles' exact signed "
         "distances in double precision. cuda: the cuda/ library's "
@@ -277,7 +255,7 @@ namespace particulate {
       prm.declare_entry(
         "Covered nodes",
         to_string(defaults.covered_nodes),
-        Patterns::Selection("inside|halfway|nearest"),
+        Patterns::Selection(core::selection_of(covered_nodes_names)),
         "Which velocity nodes take a particle's rigid velocity. inside: the "
         "nodes inside it or on its surface (signed distance <= 0, thesis eq. "
         "5.9, up to 1e-10 of the node spacing against rounding); the flow "
@@ -374,9 +352,9 @@ namespace particulate {
       symmetry_planes = read_faces("Symmetry planes");
       substeps        = prm.get_integer("Rigid substeps");
       containment_backend
-        = choice_named(backend_names, prm.get("Containment backend"));
+        = core::choice_named(backend_names, prm.get("Containment backend"));
       covered_nodes
-        = choice_named(covered_nodes_names, prm.get("Covered nodes"));
+        = core::choice_named(covered_nodes_names, prm.get("Covered nodes"));
       prm.leave_subsection();
       if (containment_backend == ContainmentBackend::cuda
           && covered_nodes != CoveredNodes::inside)

@@ -36,7 +36,8 @@ namespace particulate {
       mesh.parse(prm);
       fluid.parse(prm);
       if (time.scheme == core::TimeParameters::Scheme::steady
-          && fluid.linear_solver.velocity_preconditioner == "Chebyshev")
+          && fluid.linear_solver.velocity_preconditioner
+               == VelocityPreconditioner::chebyshev)
         throw std::runtime_error(
           "subsection 'Linear solver': 'Velocity preconditioner = "
           "Chebyshev' works only for time-dependent flow (the mass term "

@@ -1,3 +1,4 @@
+#include <particulate/core/choice_names.h>
 #include <particulate/core/input_file.h>
 #include <particulate/core/parameter_text.h>
 #include <particulate/fluid/fluid_parameters.h>
@@ -30,7 +31,118 @@ namespace particulate {
           v.push_back(Utilities::string_to_double(s));
         return v;
       }
+
+      const core::ChoiceNames<ViscosityModelType> viscosity_model_names
+        = {{ViscosityModelType::newtonian, "Newtonian"},
+           {ViscosityModelType::carreau, "Carreau"}};
+      const core::ChoiceNames<NonlinearMethod> nonlinear_method_names
+        = {{NonlinearMethod::newton, "Newton"},
+           {NonlinearMethod::fixed_point, "fixed point"}};
+      const core::ChoiceNames<InitialGuess> initial_guess_names
+        = {{InitialGuess::extrapolated, "extrapolated"},
+           {InitialGuess::previous_solution, "previous solution"}};
+      const core::ChoiceNames<SchurApproximation> schur_names
+        = {{SchurApproximation::automatic, "automatic"},
+           {SchurApproximation::cahouet_chabard, "Cahouet-Chabard"},
+           {SchurApproximation::least_squares_commutator,
+            "least-squares commutator"}};
+      const core::ChoiceNames<PressurePoissonSolver> poisson_solver_names
+        = {{PressurePoissonSolver::cg, "CG"},
+           {PressurePoissonSolver::v_cycle, "V-cycle"}};
+      const core::ChoiceNames<PressureLaplacianSmoother>
+        laplacian_smoother_names
+        = {{PressureLaplacianSmoother::ilu, "ILU"},
+           {PressureLaplacianSmoother::chebyshev, "Chebyshev"}};
+      const core::ChoiceNames<VelocityPreconditioner>
+        velocity_preconditioner_names
+        = {{VelocityPreconditioner::amg, "AMG"},
+           {VelocityPreconditioner::chebyshev, "Chebyshev"},
+           {VelocityPreconditioner::geometric_multigrid,
+            "geometric multigrid"}};
+      const core::ChoiceNames<VelocityOperator> velocity_operator_names
+        = {{VelocityOperator::assembled, "assembled"},
+           {VelocityOperator::matrix_free, "matrix-free"}};
+      const core::ChoiceNames<MultigridCoarseSolver> coarse_solver_names
+        = {{MultigridCoarseSolver::automatic, "automatic"},
+           {MultigridCoarseSolver::chebyshev, "Chebyshev"},
+           {MultigridCoarseSolver::cg_amg, "CG + AMG"}};
+      const core::ChoiceNames<MultigridOnMovingMesh> moving_mesh_names
+        = {{MultigridOnMovingMesh::rebuild, "rebuild"},
+           {MultigridOnMovingMesh::keep, "keep"}};
+      const core::ChoiceNames<AmgSmoother> amg_smoother_names
+        = {{AmgSmoother::chebyshev, "Chebyshev"},
+           {AmgSmoother::symmetric_gauss_seidel, "symmetric Gauss-Seidel"},
+           {AmgSmoother::gauss_seidel, "Gauss-Seidel"},
+           {AmgSmoother::ilu, "ILU"}};
     } // namespace
+
+
+
+    std::string
+    to_string(const ViscosityModelType choice)
+    {
+      return core::name_of(viscosity_model_names, choice);
+    }
+
+    std::string
+    to_string(const NonlinearMethod choice)
+    {
+      return core::name_of(nonlinear_method_names, choice);
+    }
+
+    std::string
+    to_string(const InitialGuess choice)
+    {
+      return core::name_of(initial_guess_names, choice);
+    }
+
+    std::string
+    to_string(const SchurApproximation choice)
+    {
+      return core::name_of(schur_names, choice);
+    }
+
+    std::string
+    to_string(const PressurePoissonSolver choice)
+    {
+      return core::name_of(poisson_solver_names, choice);
+    }
+
+    std::string
+    to_string(const PressureLaplacianSmoother choice)
+    {
+      return core::name_of(laplacian_smoother_names, choice);
+    }
+
+    std::string
+    to_string(const VelocityPreconditioner choice)
+    {
+      return core::name_of(velocity_preconditioner_names, choice);
+    }
+
+    std::string
+    to_string(const VelocityOperator choice)
+    {
+      return core::name_of(velocity_operator_names, choice);
+    }
+
+    std::string
+    to_string(const MultigridCoarseSolver choice)
+    {
+      return core::name_of(coarse_solver_names, choice);
+    }
+
+    std::string
+    to_string(const MultigridOnMovingMesh choice)
+    {
+      return core::name_of(moving_mesh_names, choice);
+    }
+
+    std::string
+    to_string(const AmgSmoother choice)
+    {
+      return core::name_of(amg_smoother_names, choice);
+    }
 
 
 
@@ -51,8 +163,8 @@ namespace particulate {
                         "the zero-shear viscosity mu_0.");
       prm.declare_entry(
         "Viscosity model",
-        defaults.viscosity_model,
-        Patterns::Selection("Newtonian|Carreau"),
+        to_string(defaults.viscosity_model),
+        Patterns::Selection(core::selection_of(viscosity_model_names)),
         "Newtonian: constant mu. Carreau: mu = mu_inf + (mu_0 - mu_inf) (1 + "
         "(lambda gamma_dot)^2)^((n-1)/2), shear-thinning for n < 1 and "
         "shear-thickening for n > 1.");
@@ -84,7 +196,8 @@ namespace particulate {
       density = core::get_positive_double(prm, "Density", "Fluid");
       dynamic_viscosity
         = core::get_positive_double(prm, "Dynamic viscosity", "Fluid");
-      viscosity_model = prm.get("Viscosity model");
+      viscosity_model
+        = core::choice_named(viscosity_model_names, prm.get("Viscosity model"));
       carreau_infinite_shear_viscosity
         = prm.get_double("Carreau infinite-shear viscosity");
       carreau_relaxation_time = prm.get_double("Carreau relaxation time");
@@ -192,8 +305,9 @@ namespace particulate {
       const NonlinearSolverParameters defaults;
       prm.enter_subsection("Nonlinear solver");
       prm.declare_entry("Method",
-                        defaults.method,
-                        Patterns::Selection("Newton|fixed point"),
+                        to_string(defaults.method),
+                        Patterns::Selection(
+                          core::selection_of(nonlinear_method_names)),
                         "Linearisation of the convective term. Newton "
                         "converges quadratically; it falls back to the "
                         "fixed-point (Oseen) iteration for the rest of the "
@@ -213,8 +327,8 @@ namespace particulate {
                         "stops with an error.");
       prm.declare_entry(
         "Initial guess",
-        defaults.initial_guess,
-        Patterns::Selection("extrapolated|previous solution"),
+        to_string(defaults.initial_guess),
+        Patterns::Selection(core::selection_of(initial_guess_names)),
         "First iterate of every (sub)step. 'extrapolated': the solution at "
         "the start of the (sub)step plus the rate of change over the last "
         "full time step (fewer Newton and FGMRES iterations once the flow "
@@ -227,11 +341,12 @@ namespace particulate {
     NonlinearSolverParameters::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
-      method             = prm.get("Method");
+      method = core::choice_named(nonlinear_method_names, prm.get("Method"));
       absolute_tolerance = prm.get_double("Absolute tolerance");
       relative_tolerance = prm.get_double("Relative tolerance");
       maximum_iterations = prm.get_integer("Maximum iterations");
-      initial_guess      = prm.get("Initial guess");
+      initial_guess
+        = core::choice_named(initial_guess_names, prm.get("Initial guess"));
       prm.leave_subsection();
     }
 
@@ -258,9 +373,8 @@ namespace particulate {
                         "Restart length of FGMRES.");
       prm.declare_entry(
         "Schur complement approximation",
-        defaults.schur_approximation,
-        Patterns::Selection(
-          "automatic|Cahouet-Chabard|least-squares commutator"),
+        to_string(defaults.schur_approximation),
+        Patterns::Selection(core::selection_of(schur_names)),
         "Cahouet-Chabard: theta mu M_p^-1 + rho/k L_p^-1, cheap and robust "
         "for time-dependent flow at any time step; for steady flow it is "
         "the pressure mass matrix mu M_p^-1 alone, whose iterations hardly "
@@ -272,8 +386,8 @@ namespace particulate {
         "steady', Cahouet-Chabard otherwise.");
       prm.declare_entry(
         "Pressure Poisson solver",
-        defaults.pressure_poisson_solver,
-        Patterns::Selection("CG|V-cycle"),
+        to_string(defaults.pressure_poisson_solver),
+        Patterns::Selection(core::selection_of(poisson_solver_names)),
         "How the Schur complement approximation applies L_p^-1, the inverse "
         "of the pressure Laplacian. CG: conjugate gradients preconditioned "
         "by an AMG V-cycle, to 'Pressure Poisson tolerance'. V-cycle: the "
@@ -296,8 +410,8 @@ namespace particulate {
         "(doc/performance.md).");
       prm.declare_entry(
         "Pressure Laplacian smoother",
-        defaults.pressure_laplacian_smoother,
-        Patterns::Selection("ILU|Chebyshev"),
+        to_string(defaults.pressure_laplacian_smoother),
+        Patterns::Selection(core::selection_of(laplacian_smoother_names)),
         "Smoother on every level of the ML V-cycle that preconditions the "
         "inner CG with the pressure Laplacian L_p. ILU: one ILU(0) sweep "
         "before and after the coarse correction; few CG iterations per "
@@ -307,8 +421,8 @@ namespace particulate {
         "cells such as the 3D DFG channel (doc/performance.md).");
       prm.declare_entry(
         "Velocity preconditioner",
-        defaults.velocity_preconditioner,
-        Patterns::Selection("AMG|Chebyshev|geometric multigrid"),
+        to_string(defaults.velocity_preconditioner),
+        Patterns::Selection(core::selection_of(velocity_preconditioner_names)),
         "Approximate inverse of the velocity block inside the block "
         "preconditioner. AMG: one V-cycle of Trilinos ML, robust for any "
         "time step, but its set-up costs many Krylov iterations. Chebyshev: "
@@ -328,8 +442,8 @@ namespace particulate {
         "without hanging nodes and free-slip planes normal to an axis.");
       prm.declare_entry(
         "Velocity operator",
-        defaults.velocity_operator,
-        Patterns::Selection("assembled|matrix-free"),
+        to_string(defaults.velocity_operator),
+        Patterns::Selection(core::selection_of(velocity_operator_names)),
         "How the outer FGMRES applies the velocity block of the Newton "
         "system. assembled: a Trilinos matrix, assembled at every Newton "
         "step. matrix-free: a cell loop with sum factorisation on the "
@@ -343,8 +457,8 @@ namespace particulate {
         "planes normal to an axis).");
       prm.declare_entry(
         "Multigrid coarse solver",
-        defaults.multigrid_coarse_solver,
-        Patterns::Selection("automatic|Chebyshev|CG + AMG"),
+        to_string(defaults.multigrid_coarse_solver),
+        Patterns::Selection(core::selection_of(coarse_solver_names)),
         "Coarse-level solve of the geometric multigrid velocity V-cycle (on "
         "the unrefined mesh). Chebyshev: a Jacobi-preconditioned Chebyshev "
         "polynomial of the matrix-free level operator, of the degree that "
@@ -360,8 +474,8 @@ namespace particulate {
         "products on that level), CG + AMG otherwise.");
       prm.declare_entry(
         "Multigrid on a moving mesh",
-        defaults.multigrid_on_moving_mesh,
-        Patterns::Selection("rebuild|keep"),
+        to_string(defaults.multigrid_on_moving_mesh),
+        Patterns::Selection(core::selection_of(moving_mesh_names)),
         "What the geometric multigrid velocity preconditioner does when the "
         "mesh vertices move (ALE: r-adaptivity, 'Moving bodies' in "
         "subsection 'Mesh deformation'). rebuild: its level operators, "
@@ -388,9 +502,9 @@ namespace particulate {
                         "flow), false the non-symmetric variant (strong "
                         "convection).");
       prm.declare_entry("AMG smoother",
-                        defaults.amg_smoother,
+                        to_string(defaults.amg_smoother),
                         Patterns::Selection(
-                          "Chebyshev|symmetric Gauss-Seidel|Gauss-Seidel|ILU"),
+                          core::selection_of(amg_smoother_names)),
                         "Smoother on every level of the velocity AMG. ILU is "
                         "robust for the non-symmetric Newton Jacobian; "
                         "Chebyshev and Gauss-Seidel can stagnate when "
@@ -412,10 +526,14 @@ namespace particulate {
       prm.enter_subsection("Linear solver");
       relative_tolerance
         = core::get_positive_double(prm, "Relative tolerance", "Linear solver");
-      maximum_iterations      = prm.get_integer("Maximum iterations");
-      krylov_size             = prm.get_integer("Krylov subspace size");
-      schur_approximation     = prm.get("Schur complement approximation");
-      pressure_poisson_solver = prm.get("Pressure Poisson solver");
+      maximum_iterations = prm.get_integer("Maximum iterations");
+      krylov_size        = prm.get_integer("Krylov subspace size");
+      schur_approximation
+        = core::choice_named(schur_names,
+                             prm.get("Schur complement approximation"));
+      pressure_poisson_solver
+        = core::choice_named(poisson_solver_names,
+                             prm.get("Pressure Poisson solver"));
       const std::string poisson_tolerance
         = prm.get("Pressure Poisson tolerance");
       pressure_poisson_tolerance = 0.; // automatic
@@ -439,24 +557,35 @@ namespace particulate {
               "is '"
               + poisson_tolerance + "').");
         }
-      pressure_laplacian_smoother = prm.get("Pressure Laplacian smoother");
-      velocity_preconditioner     = prm.get("Velocity preconditioner");
-      velocity_operator           = prm.get("Velocity operator");
-      if (velocity_operator == "matrix-free"
-          && velocity_preconditioner != "geometric multigrid")
+      pressure_laplacian_smoother
+        = core::choice_named(laplacian_smoother_names,
+                             prm.get("Pressure Laplacian smoother"));
+      velocity_preconditioner
+        = core::choice_named(velocity_preconditioner_names,
+                             prm.get("Velocity preconditioner"));
+      velocity_operator = core::choice_named(velocity_operator_names,
+                                             prm.get("Velocity operator"));
+      if (velocity_operator == VelocityOperator::matrix_free
+          && velocity_preconditioner
+               != VelocityPreconditioner::geometric_multigrid)
         throw std::runtime_error(
           "subsection 'Linear solver': 'Velocity operator = matrix-free' "
           "needs 'Velocity preconditioner = geometric multigrid' (it is '"
-          + velocity_preconditioner
+          + to_string(velocity_preconditioner)
           + "', which is built from the assembled velocity block). Set "
             "both, or 'Velocity operator = assembled'.");
-      multigrid_coarse_solver  = prm.get("Multigrid coarse solver");
-      multigrid_on_moving_mesh = prm.get("Multigrid on a moving mesh");
-      chebyshev_degree         = prm.get_integer("Chebyshev degree");
-      amg_elliptic             = prm.get_bool("AMG elliptic");
-      amg_smoother             = prm.get("AMG smoother");
-      amg_smoother_sweeps      = prm.get_integer("AMG smoother sweeps");
-      verbose                  = prm.get_bool("Verbose");
+      multigrid_coarse_solver
+        = core::choice_named(coarse_solver_names,
+                             prm.get("Multigrid coarse solver"));
+      multigrid_on_moving_mesh
+        = core::choice_named(moving_mesh_names,
+                             prm.get("Multigrid on a moving mesh"));
+      chebyshev_degree = prm.get_integer("Chebyshev degree");
+      amg_elliptic     = prm.get_bool("AMG elliptic");
+      amg_smoother
+        = core::choice_named(amg_smoother_names, prm.get("AMG smoother"));
+      amg_smoother_sweeps = prm.get_integer("AMG smoother sweeps");
+      verbose             = prm.get_bool("Verbose");
       prm.leave_subsection();
     }
 

@@ -746,7 +746,8 @@ namespace particulate {
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
       amg_data.elliptic              = true;
       amg_data.higher_order_elements = false;
-      if (parameters.linear_solver.pressure_laplacian_smoother == "ILU")
+      if (parameters.linear_solver.pressure_laplacian_smoother
+          == PressureLaplacianSmoother::ilu)
         {
           amg_data.smoother_type   = "ILU";
           amg_data.smoother_sweeps = 1;

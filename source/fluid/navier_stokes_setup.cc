@@ -131,7 +131,7 @@ namespace particulate {
 
       velocity_multigrid.reset();
       if (parameters.linear_solver.velocity_preconditioner
-          == "geometric multigrid")
+          == VelocityPreconditioner::geometric_multigrid)
         {
           const auto &bc = parameters.boundary_conditions;
           typename VelocityMultigrid<dim>::Settings settings;
@@ -141,11 +141,12 @@ namespace particulate {
                                         bc.dirichlet.end());
           settings.free_slip_ids   = bc.free_slip;
           settings.smoother_degree = parameters.linear_solver.chebyshev_degree;
-          const auto &coarse = parameters.linear_solver.multigrid_coarse_solver;
+          const MultigridCoarseSolver coarse
+            = parameters.linear_solver.multigrid_coarse_solver;
           settings.coarse_solver
-            = coarse == "Chebyshev" ?
+            = coarse == MultigridCoarseSolver::chebyshev ?
                 VelocityMultigrid<dim>::CoarseSolve::chebyshev :
-                (coarse == "CG + AMG" ?
+                (coarse == MultigridCoarseSolver::cg_amg ?
                    VelocityMultigrid<dim>::CoarseSolve::cg_amg :
                    VelocityMultigrid<dim>::CoarseSolve::automatic);
           velocity_multigrid
@@ -159,7 +160,8 @@ namespace particulate {
       multigrid_geometry_is_stale   = false;
       fresh_multigrid_iterations.clear();
       momentum_operator.reset();
-      if (parameters.linear_solver.velocity_operator == "matrix-free")
+      if (parameters.linear_solver.velocity_operator
+          == VelocityOperator::matrix_free)
         momentum_operator = std::make_unique<MomentumOperator<dim>>(
           velocity_multigrid->get_dof_handler(),
           owned_partitioning[0],
@@ -618,7 +620,8 @@ namespace particulate {
           // a V-cycle is only a preconditioner: with 'keep' the old
           // geometry's serves until FGMRES needs markedly more iterations
           // (solve_linear())
-          if (parameters.linear_solver.multigrid_on_moving_mesh == "keep")
+          if (parameters.linear_solver.multigrid_on_moving_mesh
+              == MultigridOnMovingMesh::keep)
             multigrid_geometry_is_stale = true;
           else
             refresh_multigrid_geometry();

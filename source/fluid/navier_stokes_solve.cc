@@ -30,13 +30,13 @@ namespace particulate {
        * the iterations, on the 3D DFG channel (level 2) 4.2 times, and the
        * step was no faster; so CG stays the default.
        */
-      class PressurePoissonSolver
+      class PressureLaplaceInverse
       {
       public:
-        PressurePoissonSolver(const TrilinosWrappers::SparseMatrix    &matrix,
-                              const TrilinosWrappers::PreconditionAMG &amg,
-                              const double relative_tolerance,
-                              const bool   single_v_cycle)
+        PressureLaplaceInverse(const TrilinosWrappers::SparseMatrix    &matrix,
+                               const TrilinosWrappers::PreconditionAMG &amg,
+                               const double relative_tolerance,
+                               const bool   single_v_cycle)
           : matrix(matrix)
           , amg(amg)
           , relative_tolerance(relative_tolerance)
@@ -184,7 +184,7 @@ namespace particulate {
           const MPI_Comm                           communicator,
           const VelocityInverse                   &velocity_inverse,
           const TrilinosWrappers::PreconditionILU &mass_inverse,
-          const PressurePoissonSolver             &laplace_inverse,
+          const PressureLaplaceInverse            &laplace_inverse,
           const TrilinosWrappers::MPI::Vector     &inverse_lumped_mass,
           const bool                               least_squares_commutator,
           const double                             viscous_weight,
@@ -249,7 +249,7 @@ namespace particulate {
         const SystemOperator                    &system;
         const VelocityInverse                   &velocity_inverse;
         const TrilinosWrappers::PreconditionILU &mass_inverse;
-        const PressurePoissonSolver             &laplace_inverse;
+        const PressureLaplaceInverse            &laplace_inverse;
         const TrilinosWrappers::MPI::Vector     &inverse_lumped_mass;
         const bool                               least_squares_commutator;
         const double                             viscous_weight;
@@ -273,7 +273,7 @@ namespace particulate {
         const TrilinosWrappers::MPI::BlockVector             &rhs,
         const BlockTriangularPreconditioner::VelocityInverse &velocity,
         const TrilinosWrappers::PreconditionILU              &mass,
-        const PressurePoissonSolver                          &laplace)
+        const PressureLaplaceInverse                         &laplace)
       {
         const auto finite = [](const TrilinosWrappers::MPI::Vector &v) {
           return std::isfinite(v.l2_norm());
@@ -377,7 +377,9 @@ namespace particulate {
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.constant_modes = constant_modes;
       data.elliptic       = parameters.linear_solver.amg_elliptic;
-      data.smoother_type  = parameters.linear_solver.amg_smoother.c_str();
+      const std::string smoother
+        = to_string(parameters.linear_solver.amg_smoother);
+      data.smoother_type         = smoother.c_str();
       data.higher_order_elements = true;
       data.smoother_sweeps       = parameters.linear_solver.amg_smoother_sweeps;
       data.aggregation_threshold = 0.02;
@@ -420,7 +422,8 @@ namespace particulate {
       if (!schur_approximation_is_current)
         build_schur_complement_approximation();
       const bool use_chebyshev
-        = parameters.linear_solver.velocity_preconditioner == "Chebyshev";
+        = parameters.linear_solver.velocity_preconditioner
+          == VelocityPreconditioner::chebyshev;
       bool fresh = false;
       if (velocity_multigrid)
         {
@@ -442,22 +445,25 @@ namespace particulate {
           fresh = true;
         }
 
-      TimerOutput::Scope scope(timer, "fluid: linear solve");
-      const bool         steady = stage.time_step == 0.;
-      const double       mu     = viscosity_model->reference_viscosity();
-      const std::string &schur  = parameters.linear_solver.schur_approximation;
-      const bool least_squares_commutator = schur == "least-squares commutator"
-                                            || (schur == "automatic" && steady);
+      TimerOutput::Scope       scope(timer, "fluid: linear solve");
+      const bool               steady = stage.time_step == 0.;
+      const double             mu     = viscosity_model->reference_viscosity();
+      const SchurApproximation schur
+        = parameters.linear_solver.schur_approximation;
+      const bool least_squares_commutator
+        = schur == SchurApproximation::least_squares_commutator
+          || (schur == SchurApproximation::automatic && steady);
       // 'Pressure Poisson tolerance = automatic' (stored as 0): loose for
       // Cahouet-Chabard, tighter for LSC, which applies L_p^{-1} twice
       // (measurements in the entry's documentation)
-      const PressurePoissonSolver laplace_inverse(
+      const PressureLaplaceInverse laplace_inverse(
         pressure_laplacian,
         *laplace_amg,
         parameters.linear_solver.pressure_poisson_tolerance > 0. ?
           parameters.linear_solver.pressure_poisson_tolerance :
           (least_squares_commutator ? 1e-2 : 0.3),
-        parameters.linear_solver.pressure_poisson_solver == "V-cycle"
+        parameters.linear_solver.pressure_poisson_solver
+            == PressurePoissonSolver::v_cycle
           && !least_squares_commutator);
       const unsigned int max_iterations
         = parameters.linear_solver.maximum_iterations;
@@ -619,7 +625,7 @@ namespace particulate {
         compute_explicit_residual(stage);
 
       SolveStatistics stats;
-      bool            newton = nl.method == "Newton";
+      bool            newton = nl.method == NonlinearMethod::newton;
       // A stage nearly always needs at least one iteration: assembling the
       // first matrix with the initial residual saves a residual assembly.
       assemble(stage, AssemblyTarget::jacobian_and_residual, newton);
@@ -757,9 +763,10 @@ namespace particulate {
       // taken from one stage to the next extrapolates noise: it cost 10-20 %
       // more Newton and FGMRES iterations than no extrapolation at all
       // (doc/performance.md, "Initial guess").
-      const bool extrapolate
-        = parameters.nonlinear_solver.initial_guess == "extrapolated" && k > 0.
-          && has_previous_solution && time > previous_time;
+      const bool extrapolate = parameters.nonlinear_solver.initial_guess
+                                 == InitialGuess::extrapolated
+                               && k > 0. && has_previous_solution
+                               && time > previous_time;
       BlockVector rate;
       if (extrapolate)
         {

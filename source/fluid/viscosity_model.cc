@@ -7,7 +7,7 @@ namespace particulate {
     std::unique_ptr<ViscosityModel>
     ViscosityModel::create(const FluidProperties &p)
     {
-      if (p.viscosity_model == "Carreau")
+      if (p.viscosity_model == ViscosityModelType::carreau)
         return std::make_unique<CarreauViscosity>(
           p.dynamic_viscosity,
           p.carreau_infinite_shear_viscosity,

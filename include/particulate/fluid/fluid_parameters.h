@@ -10,6 +10,114 @@
 
 namespace particulate {
   namespace fluid {
+    /** 'Viscosity model': mu constant or a function of the shear rate. */
+    enum class ViscosityModelType
+    {
+      newtonian,
+      carreau
+    };
+
+    /** 'Nonlinear solver / Method': the linearisation of convection. */
+    enum class NonlinearMethod
+    {
+      newton,
+      fixed_point
+    };
+
+    /** 'Nonlinear solver / Initial guess': the first iterate of a stage. */
+    enum class InitialGuess
+    {
+      extrapolated,
+      previous_solution
+    };
+
+    /** 'Schur complement approximation'. */
+    enum class SchurApproximation
+    {
+      automatic,
+      cahouet_chabard,
+      least_squares_commutator
+    };
+
+    /** 'Pressure Poisson solver': how L_p^{-1} is applied. */
+    enum class PressurePoissonSolver
+    {
+      cg,
+      v_cycle
+    };
+
+    /** 'Pressure Laplacian smoother' of L_p's ML V-cycle. */
+    enum class PressureLaplacianSmoother
+    {
+      ilu,
+      chebyshev
+    };
+
+    /** 'Velocity preconditioner': the approximate inverse of the velocity
+     *  block. */
+    enum class VelocityPreconditioner
+    {
+      amg,
+      chebyshev,
+      geometric_multigrid
+    };
+
+    /** 'Velocity operator': how FGMRES applies the velocity block. */
+    enum class VelocityOperator
+    {
+      assembled,
+      matrix_free
+    };
+
+    /** 'Multigrid coarse solver' of the velocity V-cycle. */
+    enum class MultigridCoarseSolver
+    {
+      automatic,
+      chebyshev,
+      cg_amg
+    };
+
+    /** 'Multigrid on a moving mesh': the V-cycle after the mesh moved. */
+    enum class MultigridOnMovingMesh
+    {
+      rebuild,
+      keep
+    };
+
+    /** 'AMG smoother' of the velocity AMG (Trilinos ML's smoother types). */
+    enum class AmgSmoother
+    {
+      chebyshev,
+      symmetric_gauss_seidel,
+      gauss_seidel,
+      ilu
+    };
+
+    /** The name of a choice in a case file ("AMG", "matrix-free", ...);
+     *  for AmgSmoother also Trilinos ML's name of the smoother. */
+    std::string
+    to_string(ViscosityModelType choice);
+    std::string
+    to_string(NonlinearMethod choice);
+    std::string
+    to_string(InitialGuess choice);
+    std::string
+    to_string(SchurApproximation choice);
+    std::string
+    to_string(PressurePoissonSolver choice);
+    std::string
+    to_string(PressureLaplacianSmoother choice);
+    std::string
+    to_string(VelocityPreconditioner choice);
+    std::string
+    to_string(VelocityOperator choice);
+    std::string
+    to_string(MultigridCoarseSolver choice);
+    std::string
+    to_string(MultigridOnMovingMesh choice);
+    std::string
+    to_string(AmgSmoother choice);
+
     /**
      * subsection `Fluid`: material properties (thesis eq. 5.1-5.2). Density
      * and the *dynamic* viscosity mu are given separately; the kinematic
@@ -20,10 +128,10 @@ namespace particulate {
       double density = 1.0; ///< rho [kg/m^3]
       double dynamic_viscosity
         = 1e-3; ///< mu [Pa s]; zero-shear value for Carreau
-      std::string viscosity_model                  = "Newtonian";
-      double      carreau_infinite_shear_viscosity = 0.; ///< mu_inf [Pa s]
-      double      carreau_relaxation_time          = 1.; ///< lambda [s]
-      double      carreau_exponent                 = 1.; ///< n [-]
+      ViscosityModelType viscosity_model      = ViscosityModelType::newtonian;
+      double carreau_infinite_shear_viscosity = 0.; ///< mu_inf [Pa s]
+      double carreau_relaxation_time          = 1.; ///< lambda [s]
+      double carreau_exponent                 = 1.; ///< n [-]
       core::FunctionExpression
         body_force; ///< f [m/s^2], acceleration (gravity)
 
@@ -70,12 +178,11 @@ namespace particulate {
     /** subsection `Nonlinear solver`. */
     struct NonlinearSolverParameters
     {
-      std::string  method             = "Newton"; ///< "Newton" or "fixed point"
-      double       absolute_tolerance = 1e-10;
-      double       relative_tolerance = 1e-6;
-      unsigned int maximum_iterations = 20;
-      /// "extrapolated" or "previous solution"
-      std::string initial_guess = "extrapolated";
+      NonlinearMethod method             = NonlinearMethod::newton;
+      double          absolute_tolerance = 1e-10;
+      double          relative_tolerance = 1e-6;
+      unsigned int    maximum_iterations = 20;
+      InitialGuess    initial_guess      = InitialGuess::extrapolated;
 
       static void
       declare(dealii::ParameterHandler &prm);
@@ -86,34 +193,34 @@ namespace particulate {
     /** subsection `Linear solver`. */
     struct LinearSolverParameters
     {
-      double       relative_tolerance = 1e-4;
-      unsigned int maximum_iterations = 1000;
-      unsigned int krylov_size        = 100;
-      /// "automatic", "Cahouet-Chabard" or "least-squares commutator"
-      std::string schur_approximation = "automatic";
-      /// L_p^{-1} inside the Schur approximation: "CG" (CG + AMG to
-      /// 'Pressure Poisson tolerance') or "V-cycle" (one AMG V-cycle)
-      std::string pressure_poisson_solver = "CG";
+      double             relative_tolerance  = 1e-4;
+      unsigned int       maximum_iterations  = 1000;
+      unsigned int       krylov_size         = 100;
+      SchurApproximation schur_approximation = SchurApproximation::automatic;
+      /// L_p^{-1} inside the Schur approximation: CG + AMG to 'Pressure
+      /// Poisson tolerance', or one AMG V-cycle
+      PressurePoissonSolver pressure_poisson_solver = PressurePoissonSolver::cg;
       /// 0: automatic (0.3 with Cahouet-Chabard, 1e-2 with LSC)
       double pressure_poisson_tolerance = 0.;
-      /// smoother of L_p's ML V-cycle: "ILU" (one ILU(0) sweep) or
-      /// "Chebyshev" (ML's Jacobi-Chebyshev, two sweeps)
-      std::string pressure_laplacian_smoother = "ILU";
-      /// "AMG" or "Chebyshev" (Jacobi-Chebyshev polynomial, no hierarchy)
-      std::string  velocity_preconditioner = "AMG";
-      unsigned int chebyshev_degree        = 4;
-      /// "assembled" or "matrix-free" (the velocity block of the outer
-      /// FGMRES operator)
-      std::string velocity_operator = "assembled";
-      /// coarse solve of the velocity V-cycle: "automatic", "Chebyshev"
-      /// or "CG + AMG"
-      std::string multigrid_coarse_solver = "automatic";
-      /// "rebuild" or "keep": the velocity V-cycle after a mesh motion
-      std::string  multigrid_on_moving_mesh = "rebuild";
-      bool         amg_elliptic             = true;
-      std::string  amg_smoother             = "ILU";
-      unsigned int amg_smoother_sweeps      = 2;
-      bool         verbose                  = false;
+      /// smoother of L_p's ML V-cycle: one ILU(0) sweep, or ML's
+      /// Jacobi-Chebyshev (two sweeps)
+      PressureLaplacianSmoother pressure_laplacian_smoother
+        = PressureLaplacianSmoother::ilu;
+      VelocityPreconditioner velocity_preconditioner
+        = VelocityPreconditioner::amg;
+      unsigned int chebyshev_degree = 4;
+      /// the velocity block of the outer FGMRES operator
+      VelocityOperator velocity_operator = VelocityOperator::assembled;
+      /// coarse solve of the velocity V-cycle
+      MultigridCoarseSolver multigrid_coarse_solver
+        = MultigridCoarseSolver::automatic;
+      /// the velocity V-cycle after a mesh motion
+      MultigridOnMovingMesh multigrid_on_moving_mesh
+        = MultigridOnMovingMesh::rebuild;
+      bool         amg_elliptic        = true;
+      AmgSmoother  amg_smoother        = AmgSmoother::ilu;
+      unsigned int amg_smoother_sweeps = 2;
+      bool         verbose             = false;
 
       static void
       declare(dealii::ParameterHandler &prm);
