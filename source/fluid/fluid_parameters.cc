@@ -46,9 +46,6 @@ namespace particulate {
            {SchurApproximation::cahouet_chabard, "Cahouet-Chabard"},
            {SchurApproximation::least_squares_commutator,
             "least-squares commutator"}};
-      const core::ChoiceNames<PressurePoissonSolver> poisson_solver_names
-        = {{PressurePoissonSolver::cg, "CG"},
-           {PressurePoissonSolver::v_cycle, "V-cycle"}};
       const core::ChoiceNames<PressureLaplacianSmoother>
         laplacian_smoother_names
         = {{PressureLaplacianSmoother::ilu, "ILU"},
@@ -100,12 +97,6 @@ namespace particulate {
     to_string(const SchurApproximation choice)
     {
       return core::name_of(schur_names, choice);
-    }
-
-    std::string
-    to_string(const PressurePoissonSolver choice)
-    {
-      return core::name_of(poisson_solver_names, choice);
     }
 
     std::string
@@ -385,24 +376,14 @@ namespace particulate {
         "automatic: LSC for 'Scheme = "
         "steady', Cahouet-Chabard otherwise.");
       prm.declare_entry(
-        "Pressure Poisson solver",
-        to_string(defaults.pressure_poisson_solver),
-        Patterns::Selection(core::selection_of(poisson_solver_names)),
-        "How the Schur complement approximation applies L_p^-1, the inverse "
-        "of the pressure Laplacian. CG: conjugate gradients preconditioned "
-        "by an AMG V-cycle, to 'Pressure Poisson tolerance'. V-cycle: the "
-        "AMG V-cycle alone, once (a fixed linear operator, no inner "
-        "iteration): each application is cheaper, FGMRES may need more "
-        "iterations. The least-squares commutator always uses CG.");
-      prm.declare_entry(
         "Pressure Poisson tolerance",
         defaults.pressure_poisson_tolerance > 0. ?
           core::number_text(defaults.pressure_poisson_tolerance) :
           std::string("automatic"),
         Patterns::Anything(),
         "Relative tolerance of the inner CG+AMG solves with the pressure "
-        "Laplacian L_p inside the Schur complement approximation ('Pressure "
-        "Poisson solver = CG'): a positive number, or automatic: 0.3 with "
+        "Laplacian L_p inside the Schur complement approximation: a "
+        "positive number, or automatic: 0.3 with "
         "Cahouet-Chabard, 1e-2 with the least-squares commutator. The outer "
         "FGMRES tolerates loose inner solves with Cahouet-Chabard; the "
         "least-squares commutator applies L_p^-1 twice and needs the "
@@ -531,9 +512,6 @@ namespace particulate {
       schur_approximation
         = core::choice_named(schur_names,
                              prm.get("Schur complement approximation"));
-      pressure_poisson_solver
-        = core::choice_named(poisson_solver_names,
-                             prm.get("Pressure Poisson solver"));
       const std::string poisson_tolerance
         = prm.get("Pressure Poisson tolerance");
       pressure_poisson_tolerance = 0.; // automatic

@@ -23,24 +23,20 @@ namespace particulate {
       /**
        * Approximate action of L_p^{-1} (the discrete pressure Laplacian):
        * conjugate gradients with an AMG preconditioner to a loose relative
-       * tolerance, or the AMG V-cycle alone. A single V-cycle is not enough
-       * for the least-squares commutator, which applies L_p^{-1} twice; a
-       * few CG steps are. Nor is it for Cahouet-Chabard on the measured
-       * cases: on ten Cate E4 (level 1, dt = 1 ms) FGMRES needed 3.5 times
-       * the iterations, on the 3D DFG channel (level 2) 4.2 times, and the
-       * step was no faster; so CG stays the default.
+       * tolerance. The AMG V-cycle alone is not enough: the least-squares
+       * commutator applies L_p^{-1} twice, and with Cahouet-Chabard FGMRES
+       * needs several times the iterations for no faster step
+       * (doc/performance.md, 'Pressure Laplacian: inner tolerance').
        */
       class PressureLaplaceInverse
       {
       public:
         PressureLaplaceInverse(const TrilinosWrappers::SparseMatrix    &matrix,
                                const TrilinosWrappers::PreconditionAMG &amg,
-                               const double relative_tolerance,
-                               const bool   single_v_cycle)
+                               const double relative_tolerance)
           : matrix(matrix)
           , amg(amg)
           , relative_tolerance(relative_tolerance)
-          , single_v_cycle(single_v_cycle)
         {}
 
         void
@@ -48,12 +44,6 @@ namespace particulate {
               const TrilinosWrappers::MPI::Vector &b) const
         {
           ++solves;
-          if (single_v_cycle)
-            {
-              amg.vmult(x, b);
-              ++iterations;
-              return;
-            }
           SolverControl                           control(200,
                                 relative_tolerance * b.l2_norm(),
                                 false,
@@ -78,7 +68,6 @@ namespace particulate {
         const TrilinosWrappers::SparseMatrix    &matrix;
         const TrilinosWrappers::PreconditionAMG &amg;
         const double                             relative_tolerance;
-        const bool                               single_v_cycle;
       };
 
 
@@ -455,16 +444,13 @@ namespace particulate {
           || (schur == SchurApproximation::automatic && steady);
       // 'Pressure Poisson tolerance = automatic' (stored as 0): loose for
       // Cahouet-Chabard, tighter for LSC, which applies L_p^{-1} twice
-      // (measurements in the entry's documentation)
+      // (doc/performance.md, 'Pressure Laplacian: inner tolerance')
       const PressureLaplaceInverse laplace_inverse(
         pressure_laplacian,
         *laplace_amg,
         parameters.linear_solver.pressure_poisson_tolerance > 0. ?
           parameters.linear_solver.pressure_poisson_tolerance :
-          (least_squares_commutator ? 1e-2 : 0.3),
-        parameters.linear_solver.pressure_poisson_solver
-            == PressurePoissonSolver::v_cycle
-          && !least_squares_commutator);
+          (least_squares_commutator ? 1e-2 : 0.3));
       const unsigned int max_iterations
         = parameters.linear_solver.maximum_iterations;
 

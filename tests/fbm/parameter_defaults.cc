@@ -250,10 +250,6 @@ namespace {
                 l.schur_approximation,
                 sl + "Schur complement approximation");
     check_equal(checker,
-                li.pressure_poisson_solver,
-                l.pressure_poisson_solver,
-                sl + "Pressure Poisson solver");
-    check_equal(checker,
                 li.pressure_poisson_tolerance,
                 l.pressure_poisson_tolerance,
                 sl + "Pressure Poisson tolerance");

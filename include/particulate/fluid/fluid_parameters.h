@@ -39,13 +39,6 @@ namespace particulate {
       least_squares_commutator
     };
 
-    /** 'Pressure Poisson solver': how L_p^{-1} is applied. */
-    enum class PressurePoissonSolver
-    {
-      cg,
-      v_cycle
-    };
-
     /** 'Pressure Laplacian smoother' of L_p's ML V-cycle. */
     enum class PressureLaplacianSmoother
     {
@@ -103,8 +96,6 @@ namespace particulate {
     to_string(InitialGuess choice);
     std::string
     to_string(SchurApproximation choice);
-    std::string
-    to_string(PressurePoissonSolver choice);
     std::string
     to_string(PressureLaplacianSmoother choice);
     std::string
@@ -197,10 +188,9 @@ namespace particulate {
       unsigned int       maximum_iterations  = 1000;
       unsigned int       krylov_size         = 100;
       SchurApproximation schur_approximation = SchurApproximation::automatic;
-      /// L_p^{-1} inside the Schur approximation: CG + AMG to 'Pressure
-      /// Poisson tolerance', or one AMG V-cycle
-      PressurePoissonSolver pressure_poisson_solver = PressurePoissonSolver::cg;
-      /// 0: automatic (0.3 with Cahouet-Chabard, 1e-2 with LSC)
+      /// relative tolerance of the inner CG + AMG solves with L_p inside
+      /// the Schur approximation; 0: automatic (0.3 with Cahouet-Chabard, 1e-2
+      /// with LSC)
       double pressure_poisson_tolerance = 0.;
       /// smoother of L_p's ML V-cycle: one ILU(0) sweep, or ML's
       /// Jacobi-Chebyshev (two sweeps)
