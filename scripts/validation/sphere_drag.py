@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Drag of ten Cate E4's sphere held fixed in a uniform stream
 (prm/sphere-drag/fixed-sphere.prm) and translating through fluid at rest
-(moving-sphere.prm), from the output folders of
+(moving-sphere.prm, moving-sphere-carried.prm), from the output folders of
 scripts/validation/sphere_drag.sh.
 
     scripts/validation/sphere_drag.py output/fixed-sphere-r* output/moving-sphere-r*
@@ -72,9 +72,10 @@ def main():
     runs = {}
     for folder in args.folders:
         name = os.path.basename(os.path.normpath(folder))
-        # <frame>-sphere[-<variant>]-r<level>[-<tag>]: the variant is the
-        # case file's (moving-sphere-carried.prm), the tag sphere_drag.sh's
-        m = re.match(r"(fixed|moving)-sphere(?:-([a-z]+))?-r(\d+)(?:-(.+))?$", name)
+        # <frame>-sphere[-<variant>]-r<level>[-<tag>]: the variant names the
+        # case file (moving-sphere-carried.prm, or a copy with an entry
+        # changed); a tag follows the level in older folders
+        m = re.match(r"(fixed|moving)-sphere(?:-(.+?))?-r(\d+)(?:-(.+))?$", name)
         if not m or not os.path.exists(os.path.join(folder, "particle_0.dat")):
             print(f"skipped {folder} (not a finished sphere_drag.sh run)")
             continue
