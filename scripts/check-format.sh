@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # One style for the whole tree: every C++ and CUDA source file is as
 # clang-format writes it (.clang-format), and every header guard is the
-# header's path in lower case (particulate_<module>_<file>_h). Prints the
+# header's path in lower case (particulate_<module>_<file>_h), and every
+# namespace is opened one level at a time (`namespace particulate {
+# namespace fluid {`, not `namespace particulate::fluid {`). Prints the
 # files that differ and exits 1; `scripts/check-format.sh --fix` reformats
 # them (the guards it only reports). The CTest style_source_is_formatted
 # runs it.
@@ -20,11 +22,15 @@ fi
 
 unformatted=()
 bad_guards=()
+compound_namespaces=()
 for f in "${files[@]}"; do
   if [[ "${1:-}" == "--fix" ]]; then
     clang-format -i "$f"
   elif ! clang-format --dry-run -Werror "$f" >/dev/null 2>&1; then
     unformatted+=("$f")
+  fi
+  if grep -qE '^\s*namespace [A-Za-z_0-9]+::' "$f"; then
+    compound_namespaces+=("$f")
   fi
   if [[ "$f" == *.h || "$f" == *.cuh ]]; then
     guard=$(sed -n 's/^#ifndef \([A-Za-z0-9_]*\)$/\1/p' "$f" | head -1)
@@ -43,6 +49,10 @@ if (( ${#unformatted[@]} )); then
 fi
 if (( ${#bad_guards[@]} )); then
   printf 'header guard not particulate_<path>_h: %s\n' "${bad_guards[@]}"
+  status=1
+fi
+if (( ${#compound_namespaces[@]} )); then
+  printf 'namespace not opened one level at a time: %s\n' "${compound_namespaces[@]}"
   status=1
 fi
 (( status )) || echo "check-format: ${#files[@]} files in style"

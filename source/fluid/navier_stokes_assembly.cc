@@ -14,12 +14,11 @@
 #include <tuple>
 
 #include "momentum_operator.h"
-#include "pressure_near_null_space.h"
+#include "pressure_laplacian_amg.h"
+#include "velocity_block_inverse.h"
 #include "velocity_jacobian_kernel.h"
 #include <Epetra_CrsMatrix.h>
-#include <Epetra_MultiVector.h>
 #include <Epetra_Vector.h>
-#include <Teuchos_ParameterList.hpp>
 
 namespace particulate {
   namespace fluid {
@@ -65,8 +64,7 @@ namespace particulate {
       if (assemble_matrix)
         {
           system_matrix = 0;
-          velocity_chebyshev.reset(); // built from the matrix it approximates
-          velocity_multigrid_is_current = false;
+          velocity_inverse->matrix_changed();
         }
       if (assemble_residual)
         system_rhs = 0;
@@ -442,12 +440,6 @@ namespace particulate {
         return result;
       }
 
-      /** rho/k of a stage's time derivative, 0 for the steady problem. */
-      double
-      mass_coefficient(const Stage &stage, const double density)
-      {
-        return stage.time_step == 0. ? 0. : density / stage.time_step;
-      }
     } // namespace
 
 
@@ -469,12 +461,12 @@ namespace particulate {
       const double rho = parameters.properties.density;
       momentum_operator->set_linearisation(velocity,
                                            has_mesh_velocity ? &w : nullptr,
-                                           mass_coefficient(stage, rho),
+                                           stage.mass_coefficient(rho),
                                            stage.theta_implicit,
                                            rho,
                                            newton,
                                            *viscosity_model);
-      velocity_multigrid_is_current = false;
+      velocity_inverse->matrix_changed();
     }
 
 
@@ -577,7 +569,7 @@ namespace particulate {
       momentum_operator->apply_nonlinear_form(system_rhs.block(0),
                                               u,
                                               has_mesh_velocity ? &w : nullptr,
-                                              mass_coefficient(stage, rho),
+                                              stage.mass_coefficient(rho),
                                               stage.theta_implicit,
                                               rho,
                                               *viscosity_model);
@@ -688,108 +680,21 @@ namespace particulate {
           mass_ilu->initialize(pressure_mass.block(1, 1));
         }
       // A new V-cycle for every new L_p. Re-using the old aggregates
-      // (PreconditionAMG::reinit) saves little, since the ILU smoothers and
+      // (PreconditionAMG::reinit) saves little, since the smoothers and
       // Galerkin products dominate the set-up; keeping the old V-cycle for
       // the updated L_p fails where a body frees a pressure, which was an
-      // isolated row in the old operator (doc/performance.md).
-      // Near-null space for ML: L_p's null space is the constant pressure,
-      // the constant-mode DoF of every cell; its near-null space also holds
-      // the linear pressures (pressure_near_null_space()). An aggregate of
-      // linear-mode DoFs alone (where a cut cell's constant mode is
-      // decoupled, see decoupled_pressure_dofs) would have a zero null
-      // space, a singular tentative prolongator and a V-cycle that returns
-      // NaN. So the aggregation works on cells: ML's "PDE equations" =
-      // dim + 1 blocks the dim + 1 pressure DoFs of a cell, which the
-      // numbering keeps consecutive (checked here), and every aggregate
-      // holds a constant mode. Where the numbering does not, one 0/1
-      // vector per mode is the fall-back, with coarse levels dim + 1 times
-      // larger.
-      const IndexSet                &owned_pressures = owned_partitioning[1];
-      const types::global_dof_index  n_owned = owned_pressures.n_elements();
-      std::vector<std::vector<bool>> pressure_modes(dim + 1,
-                                                    std::vector<bool>(n_owned,
-                                                                      false));
-      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-      bool cells_are_blocks = n_owned % (dim + 1) == 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(dof_indices);
-            types::global_dof_index block = numbers::invalid_dof_index;
-            for (unsigned int i = 0; i < dof_indices.size(); ++i)
-              {
-                const auto [component, mode] = fe.system_to_component_index(i);
-                if (component != dim)
-                  continue;
-                const auto local = owned_pressures.index_within_set(
-                  dof_indices[i] - dofs_per_block[0]);
-                pressure_modes[mode][local] = true;
-                if (block == numbers::invalid_dof_index)
-                  block = local / (dim + 1);
-                cells_are_blocks &= local / (dim + 1) == block;
-              }
-          }
-      cells_are_blocks
-        = Utilities::MPI::min(cells_are_blocks ? 1 : 0, communicator) == 1;
-
-      // Smoother ('Pressure Laplacian smoother'): by default one ILU(0)
-      // sweep before and after the coarse correction. With the
-      // Jacobi-Chebyshev smoother the inner CG needed 14.7 / 23.5
-      // iterations per solve at ten Cate r = 1 / 2; at r = 1 its coarse
-      // level is already solved exactly (two levels: a W-cycle gives the
-      // same counts), and the counts fell only in proportion to the
-      // Chebyshev degree: the smoother, not the coarse space, was what
-      // limited. With ILU(0): 3.9 / 5.5 iterations. ILU(0) of the
-      // symmetric L_p is symmetric, so the V-cycle stays a valid CG
-      // preconditioner (doc/performance.md, "Pressure Laplacian: the AMG
-      // smoother"). On the 3D DFG channel at level 2 Chebyshev is faster.
-      TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-      amg_data.elliptic              = true;
-      amg_data.higher_order_elements = false;
-      if (parameters.linear_solver.pressure_laplacian_smoother
-          == PressureLaplacianSmoother::ilu)
-        {
-          amg_data.smoother_type   = "ILU";
-          amg_data.smoother_sweeps = 1;
-        }
-      else
-        {
-          amg_data.smoother_type   = "Chebyshev";
-          amg_data.smoother_sweeps = 2;
-        }
-      amg_data.aggregation_threshold = 0.02;
+      // isolated row in the old operator.
       laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      if (cells_are_blocks)
-        {
-          amg_data.constant_modes = {pressure_modes[0]};
-          Teuchos::ParameterList              ml_parameters;
-          std::unique_ptr<Epetra_MultiVector> distributed_modes;
-          amg_data.set_parameters(ml_parameters,
-                                  distributed_modes,
-                                  pressure_laplacian);
-          ml_parameters.set("PDE equations", static_cast<int>(dim + 1));
-          // the constant and the linear pressures: with the constant
-          // alone the inner CG needed 6.5 iterations per L_p solve on the
-          // 3D channel at level 2, with both 4.6 (doc/performance.md,
-          // "Pressure Laplacian: near-null space and updates")
-          if (laplace_near_null_space.empty())
-            laplace_near_null_space
-              = pressure_near_null_space(mapping,
-                                         dof_handler,
-                                         owned_pressures,
-                                         dofs_per_block[0],
-                                         communicator);
-          ml_parameters.set("null space: type", "pre-computed");
-          ml_parameters.set("null space: dimension", static_cast<int>(dim + 1));
-          ml_parameters.set("null space: vectors",
-                            laplace_near_null_space.data());
-          laplace_amg->initialize(pressure_laplacian, ml_parameters);
-        }
-      else
-        {
-          amg_data.constant_modes = pressure_modes;
-          laplace_amg->initialize(pressure_laplacian, amg_data);
-        }
+      const bool cells_are_blocks = initialize_pressure_laplacian_amg(
+        *laplace_amg,
+        pressure_laplacian,
+        dof_handler,
+        mapping,
+        owned_partitioning[1],
+        dofs_per_block[0],
+        parameters.linear_solver.pressure_laplacian_smoother,
+        laplace_near_null_space,
+        communicator);
       if (parameters.linear_solver.verbose)
         pcout << "      L_p AMG: "
               << (cells_are_blocks ? "aggregation by cells, constant mode" :

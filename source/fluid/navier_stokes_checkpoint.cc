@@ -3,44 +3,12 @@
 
 #include <stdexcept>
 
+#include "owned_entries_io.h"
+#include "velocity_block_inverse.h"
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
-
-    namespace {
-      /** The locally owned entries of @p v in index order. */
-      void
-      write_owned(std::ostream                             &out,
-                  const TrilinosWrappers::MPI::BlockVector &v,
-                  const std::vector<IndexSet>              &owned)
-      {
-        for (unsigned int b = 0; b < owned.size(); ++b)
-          {
-            core::write_binary<unsigned long>(out, owned[b].n_elements());
-            for (const auto i : owned[b])
-              core::write_binary<double>(out, v.block(b)(i));
-          }
-      }
-
-      void
-      read_owned(std::istream                       &in,
-                 TrilinosWrappers::MPI::BlockVector &owned_vector,
-                 const std::vector<IndexSet>        &owned)
-      {
-        for (unsigned int b = 0; b < owned.size(); ++b)
-          {
-            if (core::read_binary<unsigned long>(in) != owned[b].n_elements())
-              throw std::runtime_error(
-                "the fluid unknowns of this rank differ from the saved ones "
-                "(was the mesh or the element changed in the case file?)");
-            for (const auto i : owned[b])
-              owned_vector.block(b)(i) = core::read_binary<double>(in);
-          }
-        owned_vector.compress(VectorOperation::insert);
-      }
-    } // namespace
-
-
 
     template <int dim>
     void
@@ -49,10 +17,7 @@ namespace particulate {
       core::write_binary<unsigned long>(out, dof_handler.n_dofs());
       core::write_binary<unsigned int>(out, dofs_per_block.size());
       write_owned(out, solution, owned_partitioning);
-      core::write_binary<bool>(out, has_previous_solution);
-      core::write_binary<double>(out, previous_time);
-      if (has_previous_solution)
-        write_owned(out, previous_solution, owned_partitioning);
+      time_integrator.save(out);
     }
 
 
@@ -72,14 +37,8 @@ namespace particulate {
         throw std::runtime_error("the checkpoint's block structure differs");
       BlockVector owned = make_owned_vector();
       read_owned(in, owned, owned_partitioning);
-      solution              = owned;
-      has_previous_solution = core::read_binary<bool>(in);
-      previous_time         = core::read_binary<double>(in);
-      if (has_previous_solution)
-        {
-          read_owned(in, owned, owned_partitioning);
-          previous_solution = owned;
-        }
+      solution = owned;
+      time_integrator.load(in);
       reset_preconditioners();
     }
 
@@ -89,15 +48,7 @@ namespace particulate {
     void
     NavierStokes<dim>::reset_preconditioners()
     {
-      velocity_amg.reset();
-      if (velocity_multigrid)
-        {
-          velocity_multigrid->forget_linearisations();
-          // a restarted run builds its V-cycles on the current mesh
-          if (multigrid_geometry_is_stale)
-            refresh_multigrid_geometry();
-        }
-      velocity_multigrid_is_current  = false;
+      velocity_inverse->reset();
       schur_approximation_is_current = false;
     }
 

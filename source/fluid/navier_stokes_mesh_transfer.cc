@@ -16,6 +16,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "velocity_block_inverse.h"
+
 namespace particulate {
   namespace fluid {
     using namespace dealii;
@@ -219,14 +221,13 @@ namespace particulate {
         for (unsigned int c = 0; c < dim; ++c)
           carried(node_dofs[i][c]) = carried_values[i][c];
       carried.compress(VectorOperation::insert);
-      solution              = carried;
-      old_solution          = solution;
-      has_previous_solution = false;
-      mesh_velocity         = 0.;
-      has_mesh_velocity     = true;
+      solution     = carried;
+      old_solution = solution;
+      time_integrator.forget_history();
+      mesh_velocity     = 0.;
+      has_mesh_velocity = true;
       assemble_geometric_matrices();
-      if (velocity_multigrid)
-        refresh_multigrid_geometry();
+      velocity_inverse->mesh_replaced();
     }
 
     template void

@@ -17,22 +17,11 @@
 
 #include "momentum_operator.h"
 #include "undetermined_pressures.h"
+#include "velocity_block_inverse.h"
 
 namespace particulate {
   namespace fluid {
     using namespace dealii;
-
-    SolveStatistics &
-    SolveStatistics::operator+=(const SolveStatistics &other)
-    {
-      nonlinear_iterations += other.nonlinear_iterations;
-      linear_iterations += other.linear_iterations;
-      final_residual = other.final_residual;
-      used_fixed_point |= other.used_fixed_point;
-      return *this;
-    }
-
-
 
     namespace {
       /**
@@ -81,12 +70,16 @@ namespace particulate {
       : parameters(parameters)
       , communicator(tria.get_communicator())
       , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
+      , solver_log(std::cout,
+                   parameters.linear_solver.verbose
+                     && Utilities::MPI::this_mpi_process(communicator) == 0)
       , timer(timer)
       , triangulation(tria)
       , fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1)
       , mapping(2)
       , dof_handler(tria)
       , viscosity_model(ViscosityModel::create(parameters.properties))
+      , time_integrator(parameters.nonlinear_solver.initial_guess)
     {
       body_force = parameters.properties.body_force
                      .template create<dim>(dim, "Fluid / Body force");
@@ -129,41 +122,20 @@ namespace particulate {
            locally_relevant_dofs.get_view(dofs_per_block[0],
                                           dof_handler.n_dofs())};
 
-      velocity_multigrid.reset();
-      if (parameters.linear_solver.velocity_preconditioner
-          == VelocityPreconditioner::geometric_multigrid)
-        {
-          const auto &bc = parameters.boundary_conditions;
-          typename VelocityMultigrid<dim>::Settings settings;
-          settings.dirichlet_ids = bc.no_slip;
-          settings.dirichlet_ids.insert(settings.dirichlet_ids.end(),
-                                        bc.dirichlet.begin(),
-                                        bc.dirichlet.end());
-          settings.free_slip_ids   = bc.free_slip;
-          settings.smoother_degree = parameters.linear_solver.chebyshev_degree;
-          const MultigridCoarseSolver coarse
-            = parameters.linear_solver.multigrid_coarse_solver;
-          settings.coarse_solver
-            = coarse == MultigridCoarseSolver::chebyshev ?
-                VelocityMultigrid<dim>::CoarseSolve::chebyshev :
-                (coarse == MultigridCoarseSolver::cg_amg ?
-                   VelocityMultigrid<dim>::CoarseSolve::cg_amg :
-                   VelocityMultigrid<dim>::CoarseSolve::automatic);
-          velocity_multigrid
-            = std::make_unique<VelocityMultigrid<dim>>(dof_handler,
-                                                       owned_partitioning[0],
-                                                       mapping,
-                                                       settings,
-                                                       timer);
-        }
-      velocity_multigrid_is_current = false;
-      multigrid_geometry_is_stale   = false;
-      fresh_multigrid_iterations.clear();
+      // the old preconditioner before the matrices it was built from
+      velocity_inverse.reset();
+      velocity_inverse = make_velocity_block_inverse<dim>(parameters,
+                                                          dof_handler,
+                                                          owned_partitioning[0],
+                                                          mapping,
+                                                          communicator,
+                                                          timer,
+                                                          solver_log);
       momentum_operator.reset();
       if (parameters.linear_solver.velocity_operator
           == VelocityOperator::matrix_free)
         momentum_operator = std::make_unique<MomentumOperator<dim>>(
-          velocity_multigrid->get_dof_handler(),
+          *velocity_inverse->velocity_dof_handler(),
           owned_partitioning[0],
           mapping);
 
@@ -172,8 +144,9 @@ namespace particulate {
 
       solution.reinit(owned_partitioning, relevant_partitioning, communicator);
       old_solution.reinit(solution);
-      previous_solution.reinit(solution);
-      has_previous_solution = false;
+      time_integrator.reinit(owned_partitioning,
+                             relevant_partitioning,
+                             communicator);
       mesh_velocity.reinit(solution);
       newton_update.reinit(owned_partitioning, communicator);
       system_rhs.reinit(owned_partitioning, communicator);
@@ -250,8 +223,7 @@ namespace particulate {
       for (const auto &entry : fictitious_boundary_values)
         prescribed.push_back(entry.first);
       std::sort(prescribed.begin(), prescribed.end());
-      if (velocity_multigrid)
-        velocity_multigrid->set_masked_dofs(prescribed);
+      velocity_inverse->set_masked_dofs(prescribed);
       if (momentum_operator)
         {
           // The operator masks rows and columns: it can represent
@@ -319,7 +291,7 @@ namespace particulate {
     {
       // preconditioners before the matrices they were built from: ML's
       // ILU smoothers ask the matrix for its communicator when destroyed
-      velocity_amg.reset();
+      velocity_inverse->reset();
       laplace_amg.reset();
       laplace_near_null_space.clear();
       mass_ilu.reset();
@@ -615,28 +587,7 @@ namespace particulate {
       mesh_velocity     = after;
       has_mesh_velocity = true;
       assemble_geometric_matrices();
-      if (velocity_multigrid)
-        {
-          // a V-cycle is only a preconditioner: with 'keep' the old
-          // geometry's serves until FGMRES needs markedly more iterations
-          // (solve_linear())
-          if (parameters.linear_solver.multigrid_on_moving_mesh
-              == MultigridOnMovingMesh::keep)
-            multigrid_geometry_is_stale = true;
-          else
-            refresh_multigrid_geometry();
-        }
-    }
-
-
-
-    template <int dim>
-    void
-    NavierStokes<dim>::refresh_multigrid_geometry()
-    {
-      velocity_multigrid->update_geometry();
-      velocity_multigrid_is_current = false;
-      multigrid_geometry_is_stale   = false;
+      velocity_inverse->mesh_moved();
     }
 
 
@@ -677,12 +628,10 @@ namespace particulate {
       if (pressure_laplacian.m() > 0)
         bytes += pressure_laplacian.memory_consumption();
       bytes += pressure_laplacian_update.memory_consumption();
-      if (velocity_amg)
-        bytes += velocity_amg->memory_consumption();
+      if (velocity_inverse)
+        bytes += velocity_inverse->memory_consumption();
       if (laplace_amg)
         bytes += laplace_amg->memory_consumption();
-      if (velocity_multigrid)
-        bytes += velocity_multigrid->memory_consumption();
       if (momentum_operator)
         bytes += momentum_operator->memory_consumption()
                  + gradient_matrix.memory_consumption()
@@ -691,10 +640,10 @@ namespace particulate {
                                    &newton_update,
                                    &solution,
                                    &old_solution,
-                                   &mesh_velocity,
-                                   &previous_solution})
+                                   &mesh_velocity})
         bytes += v->memory_consumption();
-      return bytes + inverse_lumped_mass.memory_consumption();
+      return bytes + time_integrator.memory_consumption()
+             + inverse_lumped_mass.memory_consumption();
     }
 
 

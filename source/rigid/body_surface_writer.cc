@@ -5,160 +5,164 @@
 #include <iomanip>
 #include <stdexcept>
 
-namespace particulate::rigid {
-  namespace {
-    /** One body's surface in the world frame and its velocity there. */
-    struct PlacedSurface
-    {
-      BodyId                        id;
-      bool                          fixed;
-      std::vector<Eigen::Vector3d>  points;
-      std::vector<Eigen::Vector3d>  velocities;
-      const geometry::TriangleMesh *mesh;
-    };
+namespace particulate {
+  namespace rigid {
+    namespace {
+      /** One body's surface in the world frame and its velocity there. */
+      struct PlacedSurface
+      {
+        BodyId                        id;
+        bool                          fixed;
+        std::vector<Eigen::Vector3d>  points;
+        std::vector<Eigen::Vector3d>  velocities;
+        const geometry::TriangleMesh *mesh;
+      };
 
-    PlacedSurface
-    place(const RigidBody              &body,
-          const BodyId                  id,
-          const geometry::TriangleMesh &mesh)
+      PlacedSurface
+      place(const RigidBody              &body,
+            const BodyId                  id,
+            const geometry::TriangleMesh &mesh)
+      {
+        PlacedSurface s{id, body.is_fixed(), {}, {}, &mesh};
+        s.points.reserve(mesh.n_vertices());
+        s.velocities.reserve(mesh.n_vertices());
+        for (const Eigen::Vector3d &v : mesh.vertices)
+          {
+            const Eigen::Vector3d x = body.to_world(v);
+            s.points.push_back(x);
+            s.velocities.push_back(
+              body.linear_velocity
+              + body.angular_velocity.cross(x - body.position));
+          }
+        return s;
+      }
+
+      void
+      write_points(std::ostream                     &out,
+                   const char                       *name,
+                   const std::vector<PlacedSurface> &surfaces,
+                   const bool                        velocities)
+      {
+        out << "        <DataArray type=\"Float64\""
+            << (name ? std::string(" Name=\"") + name + "\"" : std::string())
+            << " NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const auto &s : surfaces)
+          for (const auto &p : velocities ? s.velocities : s.points)
+            out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+        out << "        </DataArray>\n";
+      }
+
+      void
+      write_polys(std::ostream &out, const std::vector<PlacedSurface> &surfaces)
+      {
+        out << "      <Polys>\n"
+            << "        <DataArray type=\"Int64\" Name=\"connectivity\" "
+               "format=\"ascii\">\n";
+        std::size_t first = 0;
+        for (const auto &s : surfaces)
+          {
+            for (const auto &t : s.mesh->triangles)
+              out << first + t[0] << ' ' << first + t[1] << ' ' << first + t[2]
+                  << '\n';
+            first += s.points.size();
+          }
+        out << "        </DataArray>\n"
+            << "        <DataArray type=\"Int64\" Name=\"offsets\" "
+               "format=\"ascii\">\n";
+        std::size_t offset = 0;
+        for (const auto &s : surfaces)
+          for (std::size_t t = 0; t < s.mesh->n_triangles(); ++t)
+            out << (offset += 3) << '\n';
+        out << "        </DataArray>\n      </Polys>\n";
+      }
+
+      void
+      write_cell_data(std::ostream                     &out,
+                      const std::vector<PlacedSurface> &surfaces)
+      {
+        out << "      <CellData Scalars=\"id\">\n";
+        for (const bool fixed : {false, true})
+          {
+            out << "        <DataArray type=\"" << (fixed ? "Int32" : "Int64")
+                << "\" Name=\"" << (fixed ? "fixed" : "id")
+                << "\" format=\"ascii\">\n";
+            for (const auto &s : surfaces)
+              for (std::size_t t = 0; t < s.mesh->n_triangles(); ++t)
+                out << (fixed ? std::size_t(s.fixed) : std::size_t(s.id))
+                    << '\n';
+            out << "        </DataArray>\n";
+          }
+        out << "      </CellData>\n";
+      }
+    } // namespace
+
+
+
+    BodySurfaceWriter::BodySurfaceWriter(std::string prefix)
+      : series(std::move(prefix))
+    {}
+
+
+
+    const geometry::TriangleMesh &
+    BodySurfaceWriter::display_mesh(const RigidBody &body)
     {
-      PlacedSurface s{id, body.is_fixed(), {}, {}, &mesh};
-      s.points.reserve(mesh.n_vertices());
-      s.velocities.reserve(mesh.n_vertices());
-      for (const Eigen::Vector3d &v : mesh.vertices)
-        {
-          const Eigen::Vector3d x = body.to_world(v);
-          s.points.push_back(x);
-          s.velocities.push_back(
-            body.linear_velocity
-            + body.angular_velocity.cross(x - body.position));
-        }
-      return s;
+      const geometry::Shape *key = &body.shape();
+      auto                   it  = meshes.find(key);
+      if (it == meshes.end())
+        it = meshes
+               .emplace(key,
+                        std::make_pair(body.shape_ptr(),
+                                       body.shape().surface_mesh()))
+               .first;
+      return it->second.second;
     }
 
-    void
-    write_points(std::ostream                     &out,
-                 const char                       *name,
-                 const std::vector<PlacedSurface> &surfaces,
-                 const bool                        velocities)
+
+
+    std::string
+    BodySurfaceWriter::write(const World &world)
     {
-      out << "        <DataArray type=\"Float64\""
-          << (name ? std::string(" Name=\"") + name + "\"" : std::string())
-          << " NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const auto &s : surfaces)
-        for (const auto &p : velocities ? s.velocities : s.points)
-          out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-      out << "        </DataArray>\n";
+      std::vector<PlacedSurface> surfaces;
+      std::size_t                n_points = 0, n_triangles = 0;
+      for (BodyId i = 0; i < world.n_bodies(); ++i)
+        if (world.body(i).shape().is_bounded())
+          {
+            surfaces.push_back(
+              place(world.body(i), i, display_mesh(world.body(i))));
+            n_points += surfaces.back().points.size();
+            n_triangles += surfaces.back().mesh->n_triangles();
+          }
+
+      const std::string name = series.next_file("vtp");
+      std::ofstream     out(name);
+      if (!out)
+        throw std::runtime_error("rigid::BodySurfaceWriter: cannot open '"
+                                 + name
+                                 + "' for writing; does the folder exist?");
+      out << std::setprecision(10)
+          << "<?xml version=\"1.0\"?>\n"
+             "<VTKFile type=\"PolyData\" version=\"0.1\" "
+             "byte_order=\"LittleEndian\">\n"
+             "  <PolyData>\n"
+          << "    <Piece NumberOfPoints=\"" << n_points
+          << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
+             "NumberOfPolys=\""
+          << n_triangles << "\">\n      <Points>\n";
+      write_points(out, nullptr, surfaces, false);
+      out << "      </Points>\n";
+      write_polys(out, surfaces);
+      out << "      <PointData Vectors=\"velocity\">\n";
+      write_points(out, "velocity", surfaces, true);
+      out << "      </PointData>\n";
+      write_cell_data(out, surfaces);
+      out << "    </Piece>\n  </PolyData>\n</VTKFile>\n";
+      out.close();
+      if (!out)
+        throw std::runtime_error("rigid::BodySurfaceWriter: writing '" + name
+                                 + "' failed; is the disk full?");
+      series.add(world.time(), name);
+      return name;
     }
-
-    void
-    write_polys(std::ostream &out, const std::vector<PlacedSurface> &surfaces)
-    {
-      out << "      <Polys>\n"
-          << "        <DataArray type=\"Int64\" Name=\"connectivity\" "
-             "format=\"ascii\">\n";
-      std::size_t first = 0;
-      for (const auto &s : surfaces)
-        {
-          for (const auto &t : s.mesh->triangles)
-            out << first + t[0] << ' ' << first + t[1] << ' ' << first + t[2]
-                << '\n';
-          first += s.points.size();
-        }
-      out << "        </DataArray>\n"
-          << "        <DataArray type=\"Int64\" Name=\"offsets\" "
-             "format=\"ascii\">\n";
-      std::size_t offset = 0;
-      for (const auto &s : surfaces)
-        for (std::size_t t = 0; t < s.mesh->n_triangles(); ++t)
-          out << (offset += 3) << '\n';
-      out << "        </DataArray>\n      </Polys>\n";
-    }
-
-    void
-    write_cell_data(std::ostream                     &out,
-                    const std::vector<PlacedSurface> &surfaces)
-    {
-      out << "      <CellData Scalars=\"id\">\n";
-      for (const bool fixed : {false, true})
-        {
-          out << "        <DataArray type=\"" << (fixed ? "Int32" : "Int64")
-              << "\" Name=\"" << (fixed ? "fixed" : "id")
-              << "\" format=\"ascii\">\n";
-          for (const auto &s : surfaces)
-            for (std::size_t t = 0; t < s.mesh->n_triangles(); ++t)
-              out << (fixed ? std::size_t(s.fixed) : std::size_t(s.id)) << '\n';
-          out << "        </DataArray>\n";
-        }
-      out << "      </CellData>\n";
-    }
-  } // namespace
-
-
-
-  BodySurfaceWriter::BodySurfaceWriter(std::string prefix)
-    : series(std::move(prefix))
-  {}
-
-
-
-  const geometry::TriangleMesh &
-  BodySurfaceWriter::display_mesh(const RigidBody &body)
-  {
-    const geometry::Shape *key = &body.shape();
-    auto                   it  = meshes.find(key);
-    if (it == meshes.end())
-      it = meshes
-             .emplace(key,
-                      std::make_pair(body.shape_ptr(),
-                                     body.shape().surface_mesh()))
-             .first;
-    return it->second.second;
-  }
-
-
-
-  std::string
-  BodySurfaceWriter::write(const World &world)
-  {
-    std::vector<PlacedSurface> surfaces;
-    std::size_t                n_points = 0, n_triangles = 0;
-    for (BodyId i = 0; i < world.n_bodies(); ++i)
-      if (world.body(i).shape().is_bounded())
-        {
-          surfaces.push_back(
-            place(world.body(i), i, display_mesh(world.body(i))));
-          n_points += surfaces.back().points.size();
-          n_triangles += surfaces.back().mesh->n_triangles();
-        }
-
-    const std::string name = series.next_file("vtp");
-    std::ofstream     out(name);
-    if (!out)
-      throw std::runtime_error("rigid::BodySurfaceWriter: cannot open '" + name
-                               + "' for writing; does the folder exist?");
-    out << std::setprecision(10)
-        << "<?xml version=\"1.0\"?>\n"
-           "<VTKFile type=\"PolyData\" version=\"0.1\" "
-           "byte_order=\"LittleEndian\">\n"
-           "  <PolyData>\n"
-        << "    <Piece NumberOfPoints=\"" << n_points
-        << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
-           "NumberOfPolys=\""
-        << n_triangles << "\">\n      <Points>\n";
-    write_points(out, nullptr, surfaces, false);
-    out << "      </Points>\n";
-    write_polys(out, surfaces);
-    out << "      <PointData Vectors=\"velocity\">\n";
-    write_points(out, "velocity", surfaces, true);
-    out << "      </PointData>\n";
-    write_cell_data(out, surfaces);
-    out << "    </Piece>\n  </PolyData>\n</VTKFile>\n";
-    out.close();
-    if (!out)
-      throw std::runtime_error("rigid::BodySurfaceWriter: writing '" + name
-                               + "' failed; is the disk full?");
-    series.add(world.time(), name);
-    return name;
-  }
-} // namespace particulate::rigid
+  } // namespace rigid
+} // namespace particulate

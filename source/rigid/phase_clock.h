@@ -6,14 +6,18 @@
 
 #include <chrono>
 
-namespace particulate::rigid::detail {
-  using Clock = std::chrono::steady_clock;
+namespace particulate {
+  namespace rigid {
+    namespace detail {
+      using Clock = std::chrono::steady_clock;
 
-  inline double
-  seconds_since(const Clock::time_point &t0)
-  {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-  }
-} // namespace particulate::rigid::detail
+      inline double
+      seconds_since(const Clock::time_point &t0)
+      {
+        return std::chrono::duration<double>(Clock::now() - t0).count();
+      }
+    } // namespace detail
+  }   // namespace rigid
+} // namespace particulate
 
 #endif

@@ -4,7 +4,7 @@
 #include <particulate/core/simulation_parameters.h>
 #include <particulate/fluid/fluid_parameters.h>
 #include <particulate/fluid/pressure_laplacian.h>
-#include <particulate/fluid/velocity_multigrid.h>
+#include <particulate/fluid/time_integrator.h>
 #include <particulate/fluid/viscosity_model.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -29,50 +29,26 @@ namespace particulate {
   namespace fluid {
     template <int dim>
     class MomentumOperator;
-
-    /**
-     * One implicit stage of a one-step scheme (thesis eq. 5.14/5.16):
-     *
-     *   rho (u - u_old)/k + theta_i N(u) u + grad p
-     *     = - theta_e N(u_old) u_old + theta_i f(t_new) + theta_e f(t_old)
-     *
-     * with N(v)u = rho (v - w).grad u - div(2 mu D(u)) and w the mesh
-     * velocity (ALE). `time_step = 0` means the steady problem N(u)u + grad p
-     * = f.
-     */
-    struct Stage
-    {
-      double time_step      = 0.; ///< k [s]; 0 for steady
-      double theta_implicit = 1.;
-      double theta_explicit = 0.;
-      double time_old       = 0.; ///< [s]
-      double time_new       = 0.; ///< [s]
-    };
-
-    /** Iteration counts of one stage or one macro step. */
-    struct SolveStatistics
-    {
-      unsigned int nonlinear_iterations = 0;
-      unsigned int linear_iterations    = 0;
-      double       final_residual       = 0.;
-      bool         used_fixed_point     = false;
-
-      SolveStatistics &
-      operator+=(const SolveStatistics &other);
-    };
+    template <int dim>
+    class VelocityBlockInverse;
+    struct VelocityLinearisation;
 
     /**
      * Incompressible Navier-Stokes solver with Q2/P1disc elements on a
-     * parallel::fullydistributed::Triangulation, Trilinos block matrices,
-     * Newton (with a fixed-point fallback) and FGMRES preconditioned by a
-     * block-triangular preconditioner: for the velocity block algebraic
-     * multigrid, a Jacobi-Chebyshev polynomial or geometric multigrid
-     * (VelocityMultigrid), chosen in the .prm, and for the Schur complement
-     * the Cahouet-Chabard combination
-     * theta_i mu M_p^{-1} + (rho/k) L_p^{-1} (pressure mass matrix for the
-     * viscous limit, the discrete pressure Laplacian L_p = B diag(M_u)^{-1}
-     * B^T for the small-time-step limit), which keeps iteration counts flat
-     * under refinement at all time steps.
+     * parallel::fullydistributed::Triangulation and Trilinos block matrices:
+     * the facade over the flow solver's parts.
+     *
+     * - Discretisation and operator (this class): DoFs, constraints,
+     *   residual, Jacobian (assembled, or the matrix-free MomentumOperator),
+     *   the ALE terms; Newton with a fixed-point fallback for each stage.
+     * - Time integrator (TimeIntegrator): the stages of fractional-step
+     *   theta, Crank-Nicolson, backward Euler or the steady problem, and
+     *   each stage's first iterate.
+     * - Linear solver: FGMRES with the BlockTriangularPreconditioner, made
+     *   of a VelocityBlockInverse (algebraic multigrid, Jacobi-Chebyshev or
+     *   geometric multigrid) and a SchurComplementInverse (Cahouet-Chabard
+     *   theta_i mu M_p^{-1} + (rho/k) L_p^{-1}, or the least-squares
+     *   commutator), each chosen by a factory from the case file's enum.
      *
      * The class knows nothing of particles. Users that impose extra
      * constraints (the fictitious boundary method) add them through
@@ -328,13 +304,9 @@ namespace particulate {
       /** L_p and its AMG, M_p and its ILU. */
       void
       build_schur_complement_approximation();
-      void
-      build_velocity_preconditioner();
-      void
-      build_velocity_chebyshev();
-      /** Hand the current iterate to the velocity multigrid. */
-      void
-      linearise_velocity_multigrid(const Stage &stage);
+      /** What the velocity preconditioner is built from at @p stage. */
+      VelocityLinearisation
+      velocity_linearisation(const Stage &stage) const;
       unsigned int
       solve_linear(const Stage &stage, const double tolerance);
       void
@@ -343,6 +315,8 @@ namespace particulate {
       const FluidParameters     &parameters;
       MPI_Comm                   communicator;
       dealii::ConditionalOStream pcout;
+      /// rank 0 with 'Verbose': the linear solver's decisions
+      dealii::ConditionalOStream solver_log;
       dealii::TimerOutput       &timer;
 
       dealii::parallel::fullydistributed::Triangulation<dim> &triangulation;
@@ -402,49 +376,21 @@ namespace particulate {
       PressureLaplacian pressure_laplacian_update;
       /// 1 / (row sums of the velocity mass matrix), velocity block layout
       dealii::TrilinosWrappers::MPI::Vector inverse_lumped_mass;
-      bool        schur_approximation_is_current = false;
-      BlockVector system_rhs;
-      BlockVector newton_update;
-      BlockVector solution;      // ghosted
-      BlockVector old_solution;  // ghosted
-      BlockVector mesh_velocity; // ghosted
-      bool        has_mesh_velocity = false;
-      /// solution at the start of the previous time step, for the
-      /// extrapolated first Newton iterate
-      BlockVector previous_solution;
-      double      previous_time         = 0.;
-      bool        has_previous_solution = false;
-      /// FGMRES iterations right after the last velocity AMG rebuild
-      unsigned int amg_reference_iterations = 0;
+      bool           schur_approximation_is_current = false;
+      BlockVector    system_rhs;
+      BlockVector    newton_update;
+      BlockVector    solution;      // ghosted
+      BlockVector    old_solution;  // ghosted
+      BlockVector    mesh_velocity; // ghosted
+      bool           has_mesh_velocity = false;
+      TimeIntegrator time_integrator;
       /// inner L_p solves and their CG iterations, summed over the run
       unsigned long pressure_poisson_solves     = 0;
       unsigned long pressure_poisson_iterations = 0;
 
-      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> velocity_amg;
-      /// Jacobi-Chebyshev approximation of the velocity block's inverse
-      /// (the alternative to velocity_amg), rebuilt with every matrix
-      struct VelocityChebyshev;
-      std::shared_ptr<VelocityChebyshev> velocity_chebyshev;
-      /// geometric multigrid for the velocity block (the alternative to
-      /// velocity_amg and velocity_chebyshev), linearised at the iterate of
-      /// the last matrix assembly
-      std::unique_ptr<VelocityMultigrid<dim>> velocity_multigrid;
-      bool velocity_multigrid_is_current = false;
-      /// 'Multigrid on a moving mesh = keep': the mesh moved since the
-      /// V-cycle's geometry was built
-      bool multigrid_geometry_is_stale = false;
-      /// FGMRES iterations of the last solves (up to five) with a V-cycle of
-      /// the geometry they solved on (or, before any such solve, the first
-      /// one after the build), and their median: what a fresh V-cycle
-      /// needs, robust against the odd hard solve (a start from rest, a
-      /// re-solve after a kept V-cycle failed) and the odd easy one (the
-      /// last Newton step of a stage)
-      std::vector<unsigned int> fresh_multigrid_iterations;
-      unsigned int              multigrid_reference_iterations = 0;
-      /** Rebuild the V-cycle's geometry for the current vertex positions
-       *  (linearised anew by the next solve). */
-      void
-      refresh_multigrid_geometry();
+      /// the approximate inverse of the velocity block ('Velocity
+      /// preconditioner')
+      std::unique_ptr<VelocityBlockInverse<dim>> velocity_inverse;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
       /// the near-null space of L_p's AMG (pressure_near_null_space()):
       /// it depends on the mesh only, so it is kept until the mesh moves

@@ -5,92 +5,94 @@
 
 #include <cmath>
 
-namespace particulate::geometry {
+namespace particulate {
+  namespace geometry {
 
-  /**
-   * A solid circular cylinder around the body z axis, radius r, extending
-   * from z = -h to z = h (half height h), centred at the origin, with flat
-   * caps; exact signed distance including the rims. A disk of a 2D run is a
-   * cylinder along z.
-   */
-  class Cylinder : public Shape
-  {
-  public:
     /**
-     * @param radius r > 0 [m]
-     * @param half_height h > 0 [m]
+     * A solid circular cylinder around the body z axis, radius r, extending
+     * from z = -h to z = h (half height h), centred at the origin, with flat
+     * caps; exact signed distance including the rims. A disk of a 2D run is a
+     * cylinder along z.
      */
-    Cylinder(const double radius, const double half_height);
-
-    /** Radius [m]. */
-    double
-    radius() const
+    class Cylinder : public Shape
     {
-      return r;
-    }
+    public:
+      /**
+       * @param radius r > 0 [m]
+       * @param half_height h > 0 [m]
+       */
+      Cylinder(const double radius, const double half_height);
 
-    /** Half the length along the axis [m]. */
-    double
-    half_height() const
-    {
-      return hh;
-    }
+      /** Radius [m]. */
+      double
+      radius() const
+      {
+        return r;
+      }
 
-    ShapeKind
-    kind() const override
-    {
-      return ShapeKind::cylinder;
-    }
+      /** Half the length along the axis [m]. */
+      double
+      half_height() const
+      {
+        return hh;
+      }
 
-    std::string
-    name() const override
-    {
-      return "cylinder";
-    }
+      ShapeKind
+      kind() const override
+      {
+        return ShapeKind::cylinder;
+      }
 
-    double
-    signed_distance(const Eigen::Vector3d &p,
-                    Eigen::Vector3d       *normal = nullptr) const override;
+      std::string
+      name() const override
+      {
+        return "cylinder";
+      }
 
-    BoundingBox
-    bounding_box() const override;
+      double
+      signed_distance(const Eigen::Vector3d &p,
+                      Eigen::Vector3d       *normal = nullptr) const override;
 
-    double
-    bounding_radius() const override
-    {
-      return std::hypot(r, hh);
-    }
+      BoundingBox
+      bounding_box() const override;
 
-    double
-    volume() const override;
+      double
+      bounding_radius() const override
+      {
+        return std::hypot(r, hh);
+      }
 
-    /** V (3 r^2 + L^2) / 12 about the transverse axes, V r^2 / 2 about z. */
-    Eigen::Matrix3d
-    unit_inertia() const override;
+      double
+      volume() const override;
 
-    bool
-    is_convex() const override
-    {
-      return true;
-    }
+      /** V (3 r^2 + L^2) / 12 about the transverse axes, V r^2 / 2 about z. */
+      Eigen::Matrix3d
+      unit_inertia() const override;
 
-    Eigen::Vector3d
-    support(const Eigen::Vector3d &d) const override;
+      bool
+      is_convex() const override
+      {
+        return true;
+      }
 
-    /** 16 points around each rim and the middle circle, and the two cap
-     *  centres. */
-    std::vector<Eigen::Vector3d>
-    surface_points() const override;
+      Eigen::Vector3d
+      support(const Eigen::Vector3d &d) const override;
 
-    /** The display triangulation: prism of 48 sides with its caps. */
-    TriangleMesh
-    surface_mesh() const override;
+      /** 16 points around each rim and the middle circle, and the two cap
+       *  centres. */
+      std::vector<Eigen::Vector3d>
+      surface_points() const override;
 
-  private:
-    double r;
-    double hh;
-  };
+      /** The display triangulation: prism of 48 sides with its caps. */
+      TriangleMesh
+      surface_mesh() const override;
 
-} // namespace particulate::geometry
+    private:
+      double r;
+      double hh;
+    };
+
+  } // namespace geometry
+} // namespace particulate
 
 #endif

@@ -3,68 +3,70 @@
 
 #include <particulate/geometry/shape.h>
 
-namespace particulate::geometry {
+namespace particulate {
+  namespace geometry {
 
-  /**
-   * The half-space {x : n.x <= c} (a wall or floor; the solid lies on the side
-   * opposite to the unit normal n); exact signed distance n.x - c.
-   */
-  class HalfSpace : public Shape
-  {
-  public:
     /**
-     * @param normal outward normal n (normalised here; must not be zero)
-     * @param offset c [m]: the boundary plane is n.x = c
+     * The half-space {x : n.x <= c} (a wall or floor; the solid lies on the
+     * side opposite to the unit normal n); exact signed distance n.x - c.
      */
-    HalfSpace(const Eigen::Vector3d &normal, const double offset);
-
-    /** Unit outward normal n. */
-    const Eigen::Vector3d &
-    normal() const
+    class HalfSpace : public Shape
     {
-      return n;
-    }
+    public:
+      /**
+       * @param normal outward normal n (normalised here; must not be zero)
+       * @param offset c [m]: the boundary plane is n.x = c
+       */
+      HalfSpace(const Eigen::Vector3d &normal, const double offset);
 
-    /** Offset c of the plane n.x = c [m]. */
-    double
-    offset() const
-    {
-      return c;
-    }
+      /** Unit outward normal n. */
+      const Eigen::Vector3d &
+      normal() const
+      {
+        return n;
+      }
 
-    ShapeKind
-    kind() const override
-    {
-      return ShapeKind::half_space;
-    }
+      /** Offset c of the plane n.x = c [m]. */
+      double
+      offset() const
+      {
+        return c;
+      }
 
-    std::string
-    name() const override
-    {
-      return "half-space";
-    }
+      ShapeKind
+      kind() const override
+      {
+        return ShapeKind::half_space;
+      }
 
-    bool
-    is_bounded() const override
-    {
-      return false;
-    }
+      std::string
+      name() const override
+      {
+        return "half-space";
+      }
 
-    double
-    signed_distance(const Eigen::Vector3d &p,
-                    Eigen::Vector3d       *normal = nullptr) const override;
+      bool
+      is_bounded() const override
+      {
+        return false;
+      }
 
-    BoundingBox
-    bounding_box() const override;
+      double
+      signed_distance(const Eigen::Vector3d &p,
+                      Eigen::Vector3d       *normal = nullptr) const override;
 
-    double
-    volume() const override;
+      BoundingBox
+      bounding_box() const override;
 
-  private:
-    Eigen::Vector3d n;
-    double          c;
-  };
+      double
+      volume() const override;
 
-} // namespace particulate::geometry
+    private:
+      Eigen::Vector3d n;
+      double          c;
+    };
+
+  } // namespace geometry
+} // namespace particulate
 
 #endif

@@ -3,88 +3,90 @@
 
 #include <particulate/geometry/shape.h>
 
-namespace particulate::geometry {
+namespace particulate {
+  namespace geometry {
 
-  /**
-   * A ball of radius r centred at the body-frame origin; exact distance
-   * |p| - r. In a 2D run a disk is a cylinder, not a sphere.
-   */
-  class Sphere : public Shape
-  {
-  public:
-    /** @param radius r > 0 [m] */
-    explicit Sphere(const double radius);
-
-    /** Radius [m]. */
-    double
-    radius() const
+    /**
+     * A ball of radius r centred at the body-frame origin; exact distance
+     * |p| - r. In a 2D run a disk is a cylinder, not a sphere.
+     */
+    class Sphere : public Shape
     {
-      return r;
-    }
+    public:
+      /** @param radius r > 0 [m] */
+      explicit Sphere(const double radius);
 
-    ShapeKind
-    kind() const override
-    {
-      return ShapeKind::sphere;
-    }
+      /** Radius [m]. */
+      double
+      radius() const
+      {
+        return r;
+      }
 
-    std::string
-    name() const override
-    {
-      return "sphere";
-    }
+      ShapeKind
+      kind() const override
+      {
+        return ShapeKind::sphere;
+      }
 
-    double
-    signed_distance(const Eigen::Vector3d &p,
-                    Eigen::Vector3d       *normal = nullptr) const override;
+      std::string
+      name() const override
+      {
+        return "sphere";
+      }
 
-    /** Closed-form test, cheaper than the distance. */
-    bool
-    contains(const Eigen::Vector3d &p) const override;
+      double
+      signed_distance(const Eigen::Vector3d &p,
+                      Eigen::Vector3d       *normal = nullptr) const override;
 
-    BoundingBox
-    bounding_box() const override;
+      /** Closed-form test, cheaper than the distance. */
+      bool
+      contains(const Eigen::Vector3d &p) const override;
 
-    double
-    bounding_radius() const override
-    {
-      return r;
-    }
+      BoundingBox
+      bounding_box() const override;
 
-    double
-    volume() const override;
+      double
+      bounding_radius() const override
+      {
+        return r;
+      }
 
-    /** (2/5) V r^2 on the diagonal. */
-    Eigen::Matrix3d
-    unit_inertia() const override;
+      double
+      volume() const override;
 
-    bool
-    is_convex() const override
-    {
-      return true;
-    }
+      /** (2/5) V r^2 on the diagonal. */
+      Eigen::Matrix3d
+      unit_inertia() const override;
 
-    Eigen::Vector3d
-    support(const Eigen::Vector3d &d) const override;
+      bool
+      is_convex() const override
+      {
+        return true;
+      }
 
-    double
-    core_radius() const override
-    {
-      return r;
-    }
+      Eigen::Vector3d
+      support(const Eigen::Vector3d &d) const override;
 
-    /** 26 points in the directions of a cube cell's neighbours. */
-    std::vector<Eigen::Vector3d>
-    surface_points() const override;
+      double
+      core_radius() const override
+      {
+        return r;
+      }
 
-    /** The display triangulation: icosphere of 320 triangles. */
-    TriangleMesh
-    surface_mesh() const override;
+      /** 26 points in the directions of a cube cell's neighbours. */
+      std::vector<Eigen::Vector3d>
+      surface_points() const override;
 
-  private:
-    double r;
-  };
+      /** The display triangulation: icosphere of 320 triangles. */
+      TriangleMesh
+      surface_mesh() const override;
 
-} // namespace particulate::geometry
+    private:
+      double r;
+    };
+
+  } // namespace geometry
+} // namespace particulate
 
 #endif

@@ -3,63 +3,65 @@
 
 #include <particulate/geometry/shape.h>
 
-namespace particulate::geometry {
+namespace particulate {
+  namespace geometry {
 
-  /**
-   * A ring torus around the body z axis: tube of radius r whose centre circle
-   * has radius R > r in the plane z = 0; exact distance
-   * sqrt((sqrt(x^2 + y^2) - R)^2 + z^2) - r. Used for exact comparisons with
-   * a non-convex solid.
-   */
-  class Torus : public Shape
-  {
-  public:
     /**
-     * @param major_radius R [m]
-     * @param minor_radius r, 0 < r < R [m]
+     * A ring torus around the body z axis: tube of radius r whose centre circle
+     * has radius R > r in the plane z = 0; exact distance
+     * sqrt((sqrt(x^2 + y^2) - R)^2 + z^2) - r. Used for exact comparisons with
+     * a non-convex solid.
      */
-    Torus(const double major_radius, const double minor_radius);
-
-    std::string
-    name() const override
+    class Torus : public Shape
     {
-      return "torus";
-    }
+    public:
+      /**
+       * @param major_radius R [m]
+       * @param minor_radius r, 0 < r < R [m]
+       */
+      Torus(const double major_radius, const double minor_radius);
 
-    double
-    signed_distance(const Eigen::Vector3d &p,
-                    Eigen::Vector3d       *normal = nullptr) const override;
+      std::string
+      name() const override
+      {
+        return "torus";
+      }
 
-    BoundingBox
-    bounding_box() const override;
+      double
+      signed_distance(const Eigen::Vector3d &p,
+                      Eigen::Vector3d       *normal = nullptr) const override;
 
-    double
-    bounding_radius() const override
-    {
-      return R + r;
-    }
+      BoundingBox
+      bounding_box() const override;
 
-    double
-    volume() const override;
+      double
+      bounding_radius() const override
+      {
+        return R + r;
+      }
 
-    /** V (R^2/2 + 5r^2/8) about the transverse axes, V (R^2 + 3r^2/4)
-     *  about z. */
-    Eigen::Matrix3d
-    unit_inertia() const override;
+      double
+      volume() const override;
 
-    /** 36 x 12 points on a grid of the two angles. */
-    std::vector<Eigen::Vector3d>
-    surface_points() const override;
+      /** V (R^2/2 + 5r^2/8) about the transverse axes, V (R^2 + 3r^2/4)
+       *  about z. */
+      Eigen::Matrix3d
+      unit_inertia() const override;
 
-    /** The display triangulation: 48 x 24 quadrilaterals, split. */
-    TriangleMesh
-    surface_mesh() const override;
+      /** 36 x 12 points on a grid of the two angles. */
+      std::vector<Eigen::Vector3d>
+      surface_points() const override;
 
-  private:
-    double R;
-    double r;
-  };
+      /** The display triangulation: 48 x 24 quadrilaterals, split. */
+      TriangleMesh
+      surface_mesh() const override;
 
-} // namespace particulate::geometry
+    private:
+      double R;
+      double r;
+    };
+
+  } // namespace geometry
+} // namespace particulate
 
 #endif
