@@ -2,8 +2,8 @@
 #define particulate_fluid_navier_stokes_h
 
 #include <particulate/core/simulation_parameters.h>
+#include <particulate/fluid/flow_discretisation.h>
 #include <particulate/fluid/fluid_parameters.h>
-#include <particulate/fluid/pressure_laplacian.h>
 #include <particulate/fluid/time_integrator.h>
 #include <particulate/fluid/viscosity_model.h>
 
@@ -28,32 +28,31 @@
 namespace particulate {
   namespace fluid {
     template <int dim>
-    class MomentumOperator;
-    template <int dim>
-    class VelocityBlockInverse;
-    struct VelocityLinearisation;
+    class SaddlePointSolver;
 
     /**
      * Incompressible Navier-Stokes solver with Q2/P1disc elements on a
      * parallel::fullydistributed::Triangulation and Trilinos block matrices:
-     * the facade over the flow solver's parts.
+     * the facade the callers use over the flow solver's parts, and the
+     * Newton iteration (with a fixed-point fallback) that joins them in a
+     * stage.
      *
-     * - Discretisation and operator (this class): DoFs, constraints,
-     *   residual, Jacobian (assembled, or the matrix-free MomentumOperator),
-     *   the ALE terms; Newton with a fixed-point fallback for each stage.
-     * - Time integrator (TimeIntegrator): the stages of fractional-step
-     *   theta, Crank-Nicolson, backward Euler or the steady problem, and
-     *   each stage's first iterate.
-     * - Linear solver: FGMRES with the BlockTriangularPreconditioner, made
-     *   of a VelocityBlockInverse (algebraic multigrid, Jacobi-Chebyshev or
-     *   geometric multigrid) and a SchurComplementInverse (Cahouet-Chabard
-     *   theta_i mu M_p^{-1} + (rho/k) L_p^{-1}, or the least-squares
+     * - FlowDiscretisation: DoFs, constraints, the residual and Jacobian of
+     *   a stage (assembled, or the matrix-free MomentumOperator), the ALE
+     *   terms, the solution.
+     * - TimeIntegrator: the stages of fractional-step theta,
+     *   Crank-Nicolson, backward Euler or the steady problem, and each
+     *   stage's first iterate.
+     * - SaddlePointSolver: FGMRES with the block-triangular preconditioner,
+     *   made of a VelocityBlockInverse (algebraic multigrid,
+     *   Jacobi-Chebyshev or geometric multigrid) and a
+     *   SchurComplementInverse (Cahouet-Chabard or the least-squares
      *   commutator), each chosen by a factory from the case file's enum.
      *
      * The class knows nothing of particles. Users that impose extra
      * constraints (the fictitious boundary method) add them through
-     * set_additional_constraints(); the ALE mesh velocity enters through
-     * set_mesh_velocity().
+     * set_fictitious_boundary_values(); the ALE mesh velocity enters through
+     * move_mesh() or set_mesh_velocity().
      */
     template <int dim>
     class NavierStokes
@@ -75,7 +74,10 @@ namespace particulate {
 
       /** Interpolate the initial condition at @p time. */
       void
-      set_initial_condition(const double time);
+      set_initial_condition(const double time)
+      {
+        discretisation.set_initial_condition(time);
+      }
 
       /**
        * Advance from @p time by one macro step @p time_step with @p scheme
@@ -100,7 +102,10 @@ namespace particulate {
        */
       void
       interpolate_velocity(const dealii::Function<dim> &velocity,
-                           BlockVector                 &vector) const;
+                           BlockVector                 &vector) const
+      {
+        discretisation.interpolate_velocity(velocity, vector);
+      }
 
       /**
        * Extra Dirichlet values on velocity DoFs, used by the fictitious
@@ -118,7 +123,10 @@ namespace particulate {
 
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void
-      set_mesh_velocity(const BlockVector &mesh_velocity);
+      set_mesh_velocity(const BlockVector &mesh_velocity)
+      {
+        discretisation.set_mesh_velocity(mesh_velocity);
+      }
 
       /**
        * ALE: @p move_vertices moves the triangulation's vertices (keeping
@@ -185,45 +193,48 @@ namespace particulate {
       const dealii::TrilinosWrappers::BlockSparseMatrix &
       get_system_matrix() const
       {
-        return system_matrix;
+        return discretisation.get_system_matrix();
       }
 
       /** Largest |u| dt / h over the locally owned cells, all ranks. */
       double
-      cfl_number(const double time_step) const;
+      cfl_number(const double time_step) const
+      {
+        return discretisation.cfl_number(time_step);
+      }
 
       const dealii::DoFHandler<dim> &
       get_dof_handler() const
       {
-        return dof_handler;
+        return discretisation.get_dof_handler();
       }
       const dealii::Mapping<dim> &
       get_mapping() const
       {
-        return mapping;
+        return discretisation.get_mapping();
       }
       const dealii::FESystem<dim> &
       get_fe() const
       {
-        return fe;
+        return discretisation.get_fe();
       }
       /** The current solution with ghost entries. */
       const BlockVector &
       get_solution() const
       {
-        return solution;
+        return discretisation.get_solution();
       }
       /** The mesh velocity of the ALE terms (ghosted), or nullptr while the
        *  mesh has not moved. */
       const BlockVector *
       get_mesh_velocity() const
       {
-        return has_mesh_velocity ? &mesh_velocity : nullptr;
+        return discretisation.get_mesh_velocity();
       }
       const ViscosityModel &
       get_viscosity_model() const
       {
-        return *viscosity_model;
+        return discretisation.get_viscosity_model();
       }
       const FluidParameters &
       get_parameters() const
@@ -233,169 +244,55 @@ namespace particulate {
       MPI_Comm
       get_communicator() const
       {
-        return communicator;
+        return discretisation.get_communicator();
       }
       dealii::types::global_dof_index
       n_dofs() const
       {
-        return dof_handler.n_dofs();
+        return discretisation.n_dofs();
       }
       dealii::types::global_dof_index
       n_velocity_dofs() const
       {
-        return owned_partitioning.empty() ? 0 : dofs_per_block[0];
+        return discretisation.n_velocity_dofs();
       }
       /** Inner CG solves with L_p inside the Schur complement approximation
        *  since the start, and their CG iterations (for the benchmarks). */
       std::pair<unsigned long, unsigned long>
-      pressure_poisson_counts() const
-      {
-        return {pressure_poisson_solves, pressure_poisson_iterations};
-      }
+      pressure_poisson_counts() const;
 
       /** A vector with this solver's layout, locally owned entries only. */
       BlockVector
       make_owned_vector() const
       {
-        return BlockVector(owned_partitioning, communicator);
+        return discretisation.make_owned_vector();
       }
       /** A vector with this solver's layout and ghost entries. */
       BlockVector
       make_ghosted_vector() const
       {
-        return BlockVector(owned_partitioning,
-                           relevant_partitioning,
-                           communicator);
+        return discretisation.make_ghosted_vector();
       }
 
     private:
+      /** Assemble the Jacobian of the current iterate (with its residual
+       *  when @p with_residual) and tell the linear solver. */
       void
-      make_constraints(const double time);
-      void
-      setup_matrices();
-      /** The pressure mass matrix and the lumped velocity mass. */
-      void
-      assemble_geometric_matrices();
-      /** What assemble() computes: the right-hand side -R of the current
-       *  iterate into system_rhs, the Jacobian into system_matrix, or
-       *  both in one pass over the cells. */
-      enum class AssemblyTarget
-      {
-        residual,
-        jacobian,
-        jacobian_and_residual
-      };
-      void
-      assemble(const Stage         &stage,
-               const AssemblyTarget target,
-               const bool           newton);
-      /** With the matrix-free velocity operator: hand the current iterate
-       *  to it (what assembling the Jacobian is for the assembled one). */
-      void
-      linearise_momentum_operator(const Stage &stage, const bool newton);
-      /** With the matrix-free velocity operator: the part of the residual
-       *  that is fixed within a stage (old solution, body force). */
-      void
-      compute_explicit_residual(const Stage &stage);
-      /** With the matrix-free velocity operator: system_rhs = -R without a
-       *  FEValues loop (the nonlinear form, B^T p and B u). */
-      void
-      assemble_residual_matrix_free(const Stage &stage);
-      /** L_p and its AMG, M_p and its ILU. */
-      void
-      build_schur_complement_approximation();
-      /** What the velocity preconditioner is built from at @p stage. */
-      VelocityLinearisation
-      velocity_linearisation(const Stage &stage) const;
-      unsigned int
-      solve_linear(const Stage &stage, const double tolerance);
-      void
-      normalise_pressure();
+      assemble_jacobian(const Stage &stage,
+                        const bool   with_residual,
+                        const bool   newton);
+
+      using Target = typename FlowDiscretisation<dim>::AssemblyTarget;
 
       const FluidParameters     &parameters;
-      MPI_Comm                   communicator;
       dealii::ConditionalOStream pcout;
       /// rank 0 with 'Verbose': the linear solver's decisions
       dealii::ConditionalOStream solver_log;
-      dealii::TimerOutput       &timer;
 
-      dealii::parallel::fullydistributed::Triangulation<dim> &triangulation;
-      const dealii::FESystem<dim>                             fe;
-      const dealii::MappingQ<dim>                             mapping;
-      dealii::DoFHandler<dim>                                 dof_handler;
-      std::unique_ptr<ViscosityModel>                         viscosity_model;
-      std::unique_ptr<dealii::Function<dim>> body_force, boundary_velocity;
-
-      std::vector<dealii::IndexSet>                owned_partitioning;
-      std::vector<dealii::IndexSet>                relevant_partitioning;
-      std::vector<dealii::types::global_dof_index> dofs_per_block;
-      dealii::IndexSet                             locally_relevant_dofs;
-
-      /// Dirichlet values at the stage's end time (applied to the solution)
-      dealii::AffineConstraints<double> nonzero_constraints;
-      /// the same rows with zero values (applied to Newton updates)
-      dealii::AffineConstraints<double> zero_constraints;
-      /// velocity values imposed inside fictitious-boundary bodies
-      std::vector<std::pair<dealii::types::global_dof_index, double>>
-        fictitious_boundary_values;
-      /// Pressure DoFs (locally owned, sorted) that no equation determines:
-      /// all those of a cell whose velocities are all constrained (inside a
-      /// body), and one per null mode of a cell next to a body whose free
-      /// velocities do not see every pressure mode (see
-      /// find_undetermined_pressure_dofs). They are decoupled: no row or
-      /// column in the system, and kept at zero after every Newton update.
-      std::vector<dealii::types::global_dof_index> decoupled_pressure_dofs;
-      /// the covered velocity DoFs that search was made for (a list that
-      /// matches none after new DoFs or a moved mesh)
-      std::vector<dealii::types::global_dof_index>
-        decoupled_pressures_searched_for;
-
-      dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
-      /// 'Velocity operator = matrix-free': the velocity block as an
-      /// operator (the assembled system_matrix stays empty), the gradient
-      /// B^T without constraints (a mesh quantity), and B^T with the rows
-      /// of constrained velocities and the columns of decoupled pressures
-      /// zeroed (rebuilt with the Schur complement approximation, i.e.
-      /// when the constrained nodes change)
-      std::unique_ptr<MomentumOperator<dim>> momentum_operator;
-      dealii::TrilinosWrappers::SparseMatrix gradient_matrix;
-      dealii::TrilinosWrappers::SparseMatrix constrained_gradient;
-      /// locally owned constrained velocity DoFs (matrix-free operator)
-      std::vector<dealii::types::global_dof_index> constrained_velocity_dofs;
-      /// the velocity DoFs that only bodies constrain (covered nodes not on
-      /// a Dirichlet or free-slip boundary), sorted
-      std::vector<dealii::types::global_dof_index> body_constrained_dofs;
-      /// the stage's explicit part of R_u (matrix-free operator)
-      dealii::TrilinosWrappers::MPI::Vector explicit_residual;
-      /// pressure mass matrix M_p in block (1,1); other blocks empty
-      dealii::TrilinosWrappers::BlockSparseMatrix pressure_mass;
-      /// L_p = B diag(M_u)^{-1} B^T, rebuilt when B changes
-      dealii::TrilinosWrappers::SparseMatrix pressure_laplacian;
-      /// its in-place update when only the covered nodes change
-      /// (matrix-free velocity operator)
-      PressureLaplacian pressure_laplacian_update;
-      /// 1 / (row sums of the velocity mass matrix), velocity block layout
-      dealii::TrilinosWrappers::MPI::Vector inverse_lumped_mass;
-      bool           schur_approximation_is_current = false;
-      BlockVector    system_rhs;
-      BlockVector    newton_update;
-      BlockVector    solution;      // ghosted
-      BlockVector    old_solution;  // ghosted
-      BlockVector    mesh_velocity; // ghosted
-      bool           has_mesh_velocity = false;
-      TimeIntegrator time_integrator;
-      /// inner L_p solves and their CG iterations, summed over the run
-      unsigned long pressure_poisson_solves     = 0;
-      unsigned long pressure_poisson_iterations = 0;
-
-      /// the approximate inverse of the velocity block ('Velocity
-      /// preconditioner')
-      std::unique_ptr<VelocityBlockInverse<dim>> velocity_inverse;
-      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
-      /// the near-null space of L_p's AMG (pressure_near_null_space()):
-      /// it depends on the mesh only, so it is kept until the mesh moves
-      std::vector<double> laplace_near_null_space;
-      std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
+      FlowDiscretisation<dim>                 discretisation;
+      std::unique_ptr<SaddlePointSolver<dim>> linear_solver;
+      TimeIntegrator                          time_integrator;
+      BlockVector                             newton_update;
     };
   } // namespace fluid
 } // namespace particulate

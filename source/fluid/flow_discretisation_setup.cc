@@ -1,4 +1,4 @@
-#include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/flow_discretisation.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_renumbering.h>
@@ -17,7 +17,6 @@
 
 #include "momentum_operator.h"
 #include "undetermined_pressures.h"
-#include "velocity_block_inverse.h"
 
 namespace particulate {
   namespace fluid {
@@ -63,23 +62,18 @@ namespace particulate {
 
 
     template <int dim>
-    NavierStokes<dim>::NavierStokes(
+    FlowDiscretisation<dim>::FlowDiscretisation(
       const FluidParameters                          &parameters,
       parallel::fullydistributed::Triangulation<dim> &tria,
       TimerOutput                                    &timer)
       : parameters(parameters)
       , communicator(tria.get_communicator())
-      , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
-      , solver_log(std::cout,
-                   parameters.linear_solver.verbose
-                     && Utilities::MPI::this_mpi_process(communicator) == 0)
       , timer(timer)
       , triangulation(tria)
       , fe(FE_Q<dim>(2), dim, FE_DGP<dim>(1), 1)
       , mapping(2)
       , dof_handler(tria)
       , viscosity_model(ViscosityModel::create(parameters.properties))
-      , time_integrator(parameters.nonlinear_solver.initial_guess)
     {
       body_force = parameters.properties.body_force
                      .template create<dim>(dim, "Fluid / Body force");
@@ -91,13 +85,13 @@ namespace particulate {
 
 
     template <int dim>
-    NavierStokes<dim>::~NavierStokes() = default;
+    FlowDiscretisation<dim>::~FlowDiscretisation() = default;
 
 
 
     template <int dim>
     void
-    NavierStokes<dim>::setup_dofs()
+    FlowDiscretisation<dim>::distribute_dofs()
     {
       TimerOutput::Scope scope(timer, "fluid: setup");
       dof_handler.distribute_dofs(fe);
@@ -121,34 +115,35 @@ namespace particulate {
         = {locally_relevant_dofs.get_view(0, dofs_per_block[0]),
            locally_relevant_dofs.get_view(dofs_per_block[0],
                                           dof_handler.n_dofs())};
+    }
 
-      // the old preconditioner before the matrices it was built from
-      velocity_inverse.reset();
-      velocity_inverse = make_velocity_block_inverse<dim>(parameters,
-                                                          dof_handler,
-                                                          owned_partitioning[0],
-                                                          mapping,
-                                                          communicator,
-                                                          timer,
-                                                          solver_log);
+
+
+    template <int dim>
+    void
+    FlowDiscretisation<dim>::setup_operator(
+      const DoFHandler<dim> *velocity_dofs)
+    {
+      TimerOutput::Scope scope(timer, "fluid: setup");
       momentum_operator.reset();
       if (parameters.linear_solver.velocity_operator
           == VelocityOperator::matrix_free)
-        momentum_operator = std::make_unique<MomentumOperator<dim>>(
-          *velocity_inverse->velocity_dof_handler(),
-          owned_partitioning[0],
-          mapping);
+        {
+          AssertThrow(velocity_dofs != nullptr,
+                      ExcMessage("the matrix-free operator works on the "
+                                 "velocity DoFs of the geometric multigrid"));
+          momentum_operator
+            = std::make_unique<MomentumOperator<dim>>(*velocity_dofs,
+                                                      owned_partitioning[0],
+                                                      mapping);
+        }
 
       make_constraints(0.);
       setup_matrices();
 
       solution.reinit(owned_partitioning, relevant_partitioning, communicator);
       old_solution.reinit(solution);
-      time_integrator.reinit(owned_partitioning,
-                             relevant_partitioning,
-                             communicator);
       mesh_velocity.reinit(solution);
-      newton_update.reinit(owned_partitioning, communicator);
       system_rhs.reinit(owned_partitioning, communicator);
     }
 
@@ -156,7 +151,7 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::make_constraints(const double time)
+    FlowDiscretisation<dim>::make_constraints(const double time)
     {
       const auto                      &bc = parameters.boundary_conditions;
       const FEValuesExtractors::Vector velocities(0);
@@ -223,7 +218,7 @@ namespace particulate {
       for (const auto &entry : fictitious_boundary_values)
         prescribed.push_back(entry.first);
       std::sort(prescribed.begin(), prescribed.end());
-      velocity_inverse->set_masked_dofs(prescribed);
+      prescribed_velocity_dofs = prescribed;
       if (momentum_operator)
         {
           // The operator masks rows and columns: it can represent
@@ -263,45 +258,39 @@ namespace particulate {
 
 
     template <int dim>
-    void
-    NavierStokes<dim>::set_fictitious_boundary_values(
+    bool
+    FlowDiscretisation<dim>::set_fictitious_boundary_values(
       std::vector<std::pair<types::global_dof_index, double>> values)
     {
       // L_p = B D^{-1} B^T depends on which velocity DoFs are constrained:
       // rebuild it when a body has moved over a node (the values alone
       // change every step and do not matter to it).
-      const bool same_nodes = std::equal(values.begin(),
+      const bool same_nodes      = std::equal(values.begin(),
                                          values.end(),
                                          fictitious_boundary_values.begin(),
                                          fictitious_boundary_values.end(),
                                          [](const auto &a, const auto &b) {
                                            return a.first == b.first;
                                          });
-      // collective: every rank must rebuild together
-      if (Utilities::MPI::max(same_nodes ? 0 : 1, communicator) > 0)
-        schur_approximation_is_current = false;
       fictitious_boundary_values = std::move(values);
+      // collective: every rank must rebuild together
+      return Utilities::MPI::max(same_nodes ? 0 : 1, communicator) > 0;
     }
 
 
 
     template <int dim>
     void
-    NavierStokes<dim>::setup_matrices()
+    FlowDiscretisation<dim>::setup_matrices()
     {
-      // preconditioners before the matrices they were built from: ML's
+      // who built preconditioners from these matrices has dropped them: ML's
       // ILU smoothers ask the matrix for its communicator when destroyed
-      velocity_inverse->reset();
-      laplace_amg.reset();
-      laplace_near_null_space.clear();
-      mass_ilu.reset();
       system_matrix.clear();
       gradient_matrix.clear();
       constrained_gradient.clear();
       pressure_mass.clear();
       pressure_laplacian.clear();
       pressure_laplacian_update.clear();
-      schur_approximation_is_current = false;
 
       const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
       {
@@ -366,16 +355,13 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::assemble_geometric_matrices()
+    FlowDiscretisation<dim>::assemble_geometric_matrices()
     {
-      // B, M_p and the lumped velocity mass change: what was built from
-      // them goes (preconditioners before their matrices)
-      mass_ilu.reset();
-      laplace_near_null_space.clear();
+      // B, M_p and the lumped velocity mass change (who built
+      // preconditioners from them has dropped them)
       pressure_laplacian_update.clear();
-      pressure_mass                  = 0.;
-      schur_approximation_is_current = false;
-      const bool with_gradient       = momentum_operator != nullptr;
+      pressure_mass            = 0.;
+      const bool with_gradient = momentum_operator != nullptr;
       if (with_gradient)
         gradient_matrix = 0.;
       // new DoFs or a moved mesh: search the undetermined pressures again
@@ -490,7 +476,7 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::set_initial_condition(const double time)
+    FlowDiscretisation<dim>::set_initial_condition(const double time)
     {
       auto initial = parameters.initial_velocity.template create<dim>(
         dim,
@@ -508,8 +494,8 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::interpolate_velocity(const Function<dim> &velocity,
-                                            BlockVector         &vector) const
+    FlowDiscretisation<dim>::interpolate_velocity(const Function<dim> &velocity,
+                                                  BlockVector &vector) const
     {
       const FiniteElement<dim> &velocity_fe = fe.base_element(0);
       const Quadrature<dim>     nodes(velocity_fe.get_unit_support_points());
@@ -539,7 +525,7 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::set_mesh_velocity(const BlockVector &w)
+    FlowDiscretisation<dim>::set_mesh_velocity(const BlockVector &w)
     {
       mesh_velocity     = w;
       has_mesh_velocity = true;
@@ -568,8 +554,9 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::move_mesh(const std::function<void()> &move_vertices,
-                                 const double                 time_step)
+    FlowDiscretisation<dim>::move_mesh(
+      const std::function<void()> &move_vertices,
+      const double                 time_step)
     {
       Assert(time_step > 0., ExcMessage("a mesh moves over a time step"));
       TimerOutput::Scope  scope(timer, "fluid: mesh motion");
@@ -587,14 +574,13 @@ namespace particulate {
       mesh_velocity     = after;
       has_mesh_velocity = true;
       assemble_geometric_matrices();
-      velocity_inverse->mesh_moved();
     }
 
 
 
     template <int dim>
     double
-    NavierStokes<dim>::cfl_number(const double time_step) const
+    FlowDiscretisation<dim>::cfl_number(const double time_step) const
     {
       const QMidpoint<dim> quadrature;
       FEValues<dim>        fe_values(mapping, fe, quadrature, update_values);
@@ -618,7 +604,7 @@ namespace particulate {
 
     template <int dim>
     std::size_t
-    NavierStokes<dim>::memory_consumption() const
+    FlowDiscretisation<dim>::memory_consumption() const
     {
       std::size_t bytes = 0;
       for (unsigned int i = 0; i < system_matrix.n_block_rows(); ++i)
@@ -628,29 +614,58 @@ namespace particulate {
       if (pressure_laplacian.m() > 0)
         bytes += pressure_laplacian.memory_consumption();
       bytes += pressure_laplacian_update.memory_consumption();
-      if (velocity_inverse)
-        bytes += velocity_inverse->memory_consumption();
-      if (laplace_amg)
-        bytes += laplace_amg->memory_consumption();
       if (momentum_operator)
         bytes += momentum_operator->memory_consumption()
                  + gradient_matrix.memory_consumption()
                  + constrained_gradient.memory_consumption();
-      for (const BlockVector *v : {&system_rhs,
-                                   &newton_update,
-                                   &solution,
-                                   &old_solution,
-                                   &mesh_velocity})
+      for (const BlockVector *v :
+           {&system_rhs, &solution, &old_solution, &mesh_velocity})
         bytes += v->memory_consumption();
-      return bytes + time_integrator.memory_consumption()
-             + inverse_lumped_mass.memory_consumption();
+      return bytes + inverse_lumped_mass.memory_consumption();
     }
 
 
 
     template <int dim>
     void
-    NavierStokes<dim>::normalise_pressure()
+    FlowDiscretisation<dim>::begin_stage(const Stage &stage)
+    {
+      make_constraints(stage.time_new);
+      // The iterate starts from the previous solution with the new Dirichlet
+      // values; the Newton updates then keep them (zero constraints).
+      BlockVector iterate = make_owned_vector();
+      iterate             = solution;
+      nonzero_constraints.distribute(iterate);
+      set_iterate(iterate);
+      if (momentum_operator)
+        compute_explicit_residual(stage);
+    }
+
+
+
+    template <int dim>
+    void
+    FlowDiscretisation<dim>::set_iterate(BlockVector &iterate)
+    {
+      for (const auto dof : decoupled_pressure_dofs)
+        iterate(dof) = 0.;
+      solution = iterate;
+    }
+
+
+
+    template <int dim>
+    const TrilinosWrappers::SparseMatrix *
+    FlowDiscretisation<dim>::assembled_velocity_block() const
+    {
+      return momentum_operator ? nullptr : &system_matrix.block(0, 0);
+    }
+
+
+
+    template <int dim>
+    void
+    FlowDiscretisation<dim>::normalise_pressure()
     {
       // Enclosed flow: the pressure is fixed up to a constant; give it zero
       // mean. FE_DGP's first shape function on each cell is the constant 1.
@@ -673,7 +688,7 @@ namespace particulate {
       solution = tmp;
     }
 
-    template class NavierStokes<2>;
-    template class NavierStokes<3>;
+    template class FlowDiscretisation<2>;
+    template class FlowDiscretisation<3>;
   } // namespace fluid
 } // namespace particulate

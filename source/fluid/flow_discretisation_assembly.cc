@@ -1,5 +1,5 @@
 #include <particulate/fluid/cell_block_insertion.h>
-#include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/flow_discretisation.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -14,8 +14,6 @@
 #include <tuple>
 
 #include "momentum_operator.h"
-#include "pressure_laplacian_amg.h"
-#include "velocity_block_inverse.h"
 #include "velocity_jacobian_kernel.h"
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Vector.h>
@@ -42,9 +40,9 @@ namespace particulate {
      */
     template <int dim>
     void
-    NavierStokes<dim>::assemble(const Stage         &stage,
-                                const AssemblyTarget target,
-                                const bool           newton)
+    FlowDiscretisation<dim>::assemble(const Stage         &stage,
+                                      const AssemblyTarget target,
+                                      const bool           newton)
     {
       const bool assemble_matrix   = target != AssemblyTarget::residual;
       const bool assemble_residual = target != AssemblyTarget::jacobian;
@@ -64,7 +62,6 @@ namespace particulate {
       if (assemble_matrix)
         {
           system_matrix = 0;
-          velocity_inverse->matrix_changed();
         }
       if (assemble_residual)
         system_rhs = 0;
@@ -446,8 +443,8 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::linearise_momentum_operator(const Stage &stage,
-                                                   const bool   newton)
+    FlowDiscretisation<dim>::linearise_momentum_operator(const Stage &stage,
+                                                         const bool   newton)
     {
       TimerOutput::Scope scope(timer, "fluid: linearise velocity operator");
       TrilinosWrappers::MPI::Vector velocity(owned_partitioning[0],
@@ -466,14 +463,13 @@ namespace particulate {
                                            rho,
                                            newton,
                                            *viscosity_model);
-      velocity_inverse->matrix_changed();
     }
 
 
 
     template <int dim>
     void
-    NavierStokes<dim>::compute_explicit_residual(const Stage &stage)
+    FlowDiscretisation<dim>::compute_explicit_residual(const Stage &stage)
     {
       TimerOutput::Scope scope(timer, "fluid: assemble residual");
       explicit_residual.reinit(owned_partitioning[0], communicator);
@@ -553,7 +549,7 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::assemble_residual_matrix_free(const Stage &stage)
+    FlowDiscretisation<dim>::assemble_residual_matrix_free(const Stage &stage)
     {
       TimerOutput::Scope            scope(timer, "fluid: assemble residual");
       const double                  rho = parameters.properties.density;
@@ -590,10 +586,8 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::build_schur_complement_approximation()
+    FlowDiscretisation<dim>::build_pressure_laplacian()
     {
-      TimerOutput::Scope scope(timer, "fluid: Schur approximation");
-      timer.enter_subsection("fluid: Schur approximation: L_p");
       // L_p = B diag(M_u)^{-1} B^T from the divergence blocks of the current
       // matrix (they do not depend on the iterate, only on mesh and
       // constraints). The sign convention B = -div makes L_p positive.
@@ -638,9 +632,6 @@ namespace particulate {
               && epetra.RightScale(*free_pressure.trilinos_vector()(0)) == 0,
             ExcMessage("Epetra could not scale B^T."));
 
-          // ML's ILU smoothers ask the matrix for its communicator when
-          // destroyed: the old V-cycle goes before its matrix changes
-          laplace_amg.reset();
           flow_row = pressure_laplacian_update.update(pressure_laplacian,
                                                       gradient_matrix,
                                                       inverse_lumped_mass,
@@ -650,7 +641,6 @@ namespace particulate {
         }
       else
         {
-          laplace_amg.reset();
           system_matrix.block(1, 0).mmult(pressure_laplacian,
                                           system_matrix.block(0, 1),
                                           inverse_lumped_mass);
@@ -670,58 +660,33 @@ namespace particulate {
                                    pressure_laplacian.diag_element(flow_row));
           pressure_laplacian.compress(VectorOperation::add);
         }
-      timer.leave_subsection("fluid: Schur approximation: L_p");
-
-      TimerOutput::Scope amg_scope(timer,
-                                   "fluid: Schur approximation: AMG set-up");
-      if (!mass_ilu) // M_p changes with the mesh only
-        {
-          mass_ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
-          mass_ilu->initialize(pressure_mass.block(1, 1));
-        }
-      // A new V-cycle for every new L_p. Re-using the old aggregates
-      // (PreconditionAMG::reinit) saves little, since the smoothers and
-      // Galerkin products dominate the set-up; keeping the old V-cycle for
-      // the updated L_p fails where a body frees a pressure, which was an
-      // isolated row in the old operator.
-      laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      const bool cells_are_blocks = initialize_pressure_laplacian_amg(
-        *laplace_amg,
-        pressure_laplacian,
-        dof_handler,
-        mapping,
-        owned_partitioning[1],
-        dofs_per_block[0],
-        parameters.linear_solver.pressure_laplacian_smoother,
-        laplace_near_null_space,
-        communicator);
-      if (parameters.linear_solver.verbose)
-        pcout << "      L_p AMG: "
-              << (cells_are_blocks ? "aggregation by cells, constant mode" :
-                                     "one near-null vector per pressure mode")
-              << std::endl;
-      schur_approximation_is_current = true;
     }
 
     template void
-    NavierStokes<2>::assemble(const Stage &, const AssemblyTarget, const bool);
+    FlowDiscretisation<2>::assemble(const Stage &,
+                                    const AssemblyTarget,
+                                    const bool);
     template void
-    NavierStokes<3>::assemble(const Stage &, const AssemblyTarget, const bool);
+    FlowDiscretisation<3>::assemble(const Stage &,
+                                    const AssemblyTarget,
+                                    const bool);
     template void
-    NavierStokes<2>::linearise_momentum_operator(const Stage &, const bool);
+    FlowDiscretisation<2>::linearise_momentum_operator(const Stage &,
+                                                       const bool);
     template void
-    NavierStokes<3>::linearise_momentum_operator(const Stage &, const bool);
+    FlowDiscretisation<3>::linearise_momentum_operator(const Stage &,
+                                                       const bool);
     template void
-    NavierStokes<2>::compute_explicit_residual(const Stage &);
+    FlowDiscretisation<2>::compute_explicit_residual(const Stage &);
     template void
-    NavierStokes<3>::compute_explicit_residual(const Stage &);
+    FlowDiscretisation<3>::compute_explicit_residual(const Stage &);
     template void
-    NavierStokes<2>::assemble_residual_matrix_free(const Stage &);
+    FlowDiscretisation<2>::assemble_residual_matrix_free(const Stage &);
     template void
-    NavierStokes<3>::assemble_residual_matrix_free(const Stage &);
+    FlowDiscretisation<3>::assemble_residual_matrix_free(const Stage &);
     template void
-    NavierStokes<2>::build_schur_complement_approximation();
+    FlowDiscretisation<2>::build_pressure_laplacian();
     template void
-    NavierStokes<3>::build_schur_complement_approximation();
+    FlowDiscretisation<3>::build_pressure_laplacian();
   } // namespace fluid
 } // namespace particulate

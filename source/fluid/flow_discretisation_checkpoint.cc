@@ -1,10 +1,9 @@
 #include <particulate/core/checkpoint.h>
-#include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/flow_discretisation.h>
 
 #include <stdexcept>
 
 #include "owned_entries_io.h"
-#include "velocity_block_inverse.h"
 
 namespace particulate {
   namespace fluid {
@@ -12,19 +11,18 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::save_state(std::ostream &out) const
+    FlowDiscretisation<dim>::save_solution(std::ostream &out) const
     {
       core::write_binary<unsigned long>(out, dof_handler.n_dofs());
       core::write_binary<unsigned int>(out, dofs_per_block.size());
       write_owned(out, solution, owned_partitioning);
-      time_integrator.save(out);
     }
 
 
 
     template <int dim>
     void
-    NavierStokes<dim>::load_state(std::istream &in)
+    FlowDiscretisation<dim>::load_solution(std::istream &in)
     {
       const auto n_saved = core::read_binary<unsigned long>(in);
       if (n_saved != dof_handler.n_dofs())
@@ -38,33 +36,15 @@ namespace particulate {
       BlockVector owned = make_owned_vector();
       read_owned(in, owned, owned_partitioning);
       solution = owned;
-      time_integrator.load(in);
-      reset_preconditioners();
     }
 
-
-
-    template <int dim>
-    void
-    NavierStokes<dim>::reset_preconditioners()
-    {
-      velocity_inverse->reset();
-      schur_approximation_is_current = false;
-    }
-
-
-
     template void
-    NavierStokes<2>::save_state(std::ostream &) const;
+    FlowDiscretisation<2>::save_solution(std::ostream &) const;
     template void
-    NavierStokes<3>::save_state(std::ostream &) const;
+    FlowDiscretisation<3>::save_solution(std::ostream &) const;
     template void
-    NavierStokes<2>::load_state(std::istream &);
+    FlowDiscretisation<2>::load_solution(std::istream &);
     template void
-    NavierStokes<3>::load_state(std::istream &);
-    template void
-    NavierStokes<2>::reset_preconditioners();
-    template void
-    NavierStokes<3>::reset_preconditioners();
+    FlowDiscretisation<3>::load_solution(std::istream &);
   } // namespace fluid
 } // namespace particulate

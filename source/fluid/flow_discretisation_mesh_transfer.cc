@@ -2,7 +2,7 @@
 // positions to new ones by interpolation (NavierStokes::
 // transfer_to_moved_mesh), for mesh moves too large for the ALE term.
 
-#include <particulate/fluid/navier_stokes.h>
+#include <particulate/fluid/flow_discretisation.h>
 
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/mpi_remote_point_evaluation.h>
@@ -16,7 +16,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "velocity_block_inverse.h"
 
 namespace particulate {
   namespace fluid {
@@ -90,7 +89,7 @@ namespace particulate {
 
     template <int dim>
     void
-    NavierStokes<dim>::transfer_to_moved_mesh(
+    FlowDiscretisation<dim>::transfer_to_moved_mesh(
       const std::function<void()> &move_vertices)
     {
       TimerOutput::Scope scope(timer, "fluid: mesh transfer");
@@ -221,18 +220,18 @@ namespace particulate {
         for (unsigned int c = 0; c < dim; ++c)
           carried(node_dofs[i][c]) = carried_values[i][c];
       carried.compress(VectorOperation::insert);
-      solution     = carried;
-      old_solution = solution;
-      time_integrator.forget_history();
+      solution          = carried;
+      old_solution      = solution;
       mesh_velocity     = 0.;
       has_mesh_velocity = true;
       assemble_geometric_matrices();
-      velocity_inverse->mesh_replaced();
     }
 
     template void
-    NavierStokes<2>::transfer_to_moved_mesh(const std::function<void()> &);
+    FlowDiscretisation<2>::transfer_to_moved_mesh(
+      const std::function<void()> &);
     template void
-    NavierStokes<3>::transfer_to_moved_mesh(const std::function<void()> &);
+    FlowDiscretisation<3>::transfer_to_moved_mesh(
+      const std::function<void()> &);
   } // namespace fluid
 } // namespace particulate

@@ -1,0 +1,370 @@
+#include "saddle_point_solver.h"
+
+#include <particulate/fluid/solver_failure.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "block_triangular_preconditioner.h"
+#include "momentum_operator.h"
+#include "pressure_laplacian_amg.h"
+#include "saddle_point_operator.h"
+#include "schur_complement.h"
+
+namespace particulate {
+  namespace fluid {
+    using namespace dealii;
+
+    namespace {
+      /**
+       * After FGMRES produced NaN or Inf: which ingredient did, so that the
+       * message can say where to look (each part is applied to the
+       * right-hand side once).
+       */
+      template <int dim>
+      std::string
+      locate_non_finite(const SaddlePointOperator                &system,
+                        const TrilinosWrappers::MPI::BlockVector &rhs,
+                        const VelocityBlockInverse<dim>          &velocity,
+                        const TrilinosWrappers::PreconditionILU  &mass,
+                        const PressureLaplaceInverse             &laplace)
+      {
+        const auto finite = [](const TrilinosWrappers::MPI::Vector &v) {
+          return std::isfinite(v.l2_norm());
+        };
+        if (!std::isfinite(rhs.l2_norm()))
+          return "The right-hand side is not finite.";
+        const auto *matrix = system.assembled_matrix();
+        if (matrix != nullptr && !std::isfinite(matrix->frobenius_norm()))
+          return "The system matrix is not finite.";
+        TrilinosWrappers::MPI::Vector u(rhs.block(0)), p(rhs.block(1));
+        velocity.vmult(u, rhs.block(0));
+        if (!finite(u))
+          return "The velocity preconditioner returned NaN/Inf.";
+        mass.vmult(p, rhs.block(1));
+        if (!finite(p))
+          return "The pressure mass ILU returned NaN/Inf.";
+        laplace.solve(p, rhs.block(1));
+        if (!finite(p))
+          return "The pressure Laplacian solve (AMG on L_p) returned "
+                 "NaN/Inf: L_p is probably singular next to a body.";
+        return "Each preconditioner part alone is finite on the "
+               "right-hand side.";
+      }
+    } // namespace
+
+
+
+    namespace {
+      /** What the velocity preconditioner is built from at @p stage. */
+      template <int dim>
+      VelocityLinearisation
+      velocity_linearisation(const FlowDiscretisation<dim> &d,
+                             const Stage                   &stage)
+      {
+        VelocityLinearisation a;
+        a.matrix   = d.assembled_velocity_block();
+        a.velocity = &d.get_solution().block(0);
+        a.mass_coefficient
+          = stage.mass_coefficient(d.get_parameters().properties.density);
+        a.theta_implicit = stage.theta_implicit;
+        a.viscosity      = &d.get_viscosity_model();
+        return a;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    SaddlePointSolver<dim>::SaddlePointSolver(const FluidParameters &parameters,
+                                              TimerOutput           &timer,
+                                              const ConditionalOStream &log)
+      : parameters(parameters)
+      , timer(timer)
+      , log(log)
+    {}
+
+
+
+    template <int dim>
+    SaddlePointSolver<dim>::~SaddlePointSolver() = default;
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::clear()
+    {
+      velocity_inverse.reset();
+      laplace_amg.reset();
+      laplace_near_null_space.clear();
+      mass_ilu.reset();
+      schur_ingredients_are_current = false;
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::setup(const FlowDiscretisation<dim> &d)
+    {
+      clear();
+      velocity_inverse
+        = make_velocity_block_inverse<dim>(parameters,
+                                           d.get_dof_handler(),
+                                           d.get_owned_partitioning()[0],
+                                           d.get_mapping(),
+                                           d.get_communicator(),
+                                           timer,
+                                           log);
+    }
+
+
+
+    template <int dim>
+    const DoFHandler<dim> *
+    SaddlePointSolver<dim>::velocity_dof_handler() const
+    {
+      return velocity_inverse->velocity_dof_handler();
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::matrix_changed()
+    {
+      velocity_inverse->matrix_changed();
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::set_masked_dofs(
+      const std::vector<types::global_dof_index> &dofs)
+    {
+      velocity_inverse->set_masked_dofs(dofs);
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::geometry_changing()
+    {
+      // M_p, B and the lumped velocity mass change: what was built from
+      // them goes before they do
+      mass_ilu.reset();
+      laplace_near_null_space.clear();
+      schur_ingredients_are_current = false;
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::mesh_moved()
+    {
+      velocity_inverse->mesh_moved();
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::mesh_replaced()
+    {
+      velocity_inverse->mesh_replaced();
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::reset()
+    {
+      velocity_inverse->reset();
+      schur_ingredients_are_current = false;
+    }
+
+
+
+    template <int dim>
+    void
+    SaddlePointSolver<dim>::build_schur_ingredients(FlowDiscretisation<dim> &d)
+    {
+      TimerOutput::Scope scope(timer, "fluid: Schur approximation");
+      {
+        TimerOutput::Scope lp_scope(timer, "fluid: Schur approximation: L_p");
+        // ML's ILU smoothers ask the matrix for its communicator when
+        // destroyed: the old V-cycle goes before its matrix changes
+        laplace_amg.reset();
+        d.build_pressure_laplacian();
+      }
+      TimerOutput::Scope amg_scope(timer,
+                                   "fluid: Schur approximation: AMG set-up");
+      if (!mass_ilu) // M_p changes with the mesh only
+        {
+          mass_ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
+          mass_ilu->initialize(d.get_pressure_mass());
+        }
+      // A new V-cycle for every new L_p. Re-using the old aggregates
+      // (PreconditionAMG::reinit) saves little, since the smoothers and
+      // Galerkin products dominate the set-up; keeping the old V-cycle for
+      // the updated L_p fails where a body frees a pressure, which was an
+      // isolated row in the old operator.
+      laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      const bool cells_are_blocks = initialize_pressure_laplacian_amg(
+        *laplace_amg,
+        d.get_pressure_laplacian(),
+        d.get_dof_handler(),
+        d.get_mapping(),
+        d.get_owned_partitioning()[1],
+        d.n_velocity_dofs(),
+        parameters.linear_solver.pressure_laplacian_smoother,
+        laplace_near_null_space,
+        d.get_communicator());
+      log << "      L_p AMG: "
+          << (cells_are_blocks ? "aggregation by cells, constant mode" :
+                                 "one near-null vector per pressure mode")
+          << std::endl;
+      schur_ingredients_are_current = true;
+    }
+
+
+
+    /*
+     * FGMRES with the block-triangular preconditioner. The velocity block
+     * inverse may be one kept from an earlier matrix: it then gets a
+     * limited number of iterations (twice what a fresh one needs, plus a
+     * margin); if FGMRES needs more, it is rebuilt and the solve repeated.
+     */
+    template <int dim>
+    unsigned int
+    SaddlePointSolver<dim>::solve(const Stage             &stage,
+                                  const double             tolerance,
+                                  FlowDiscretisation<dim> &discretisation,
+                                  BlockVector             &newton_update)
+    {
+      if (!schur_ingredients_are_current)
+        build_schur_ingredients(discretisation);
+      const auto                 &d = discretisation;
+      const VelocityLinearisation linearisation
+        = velocity_linearisation(d, stage);
+      bool fresh = velocity_inverse->prepare(linearisation);
+
+      TimerOutput::Scope       scope(timer, "fluid: linear solve");
+      const bool               steady = stage.time_step == 0.;
+      const SchurApproximation schur  = resolve_schur_approximation(
+        parameters.linear_solver.schur_approximation,
+        steady);
+      const double poisson_tolerance
+        = parameters.linear_solver.pressure_poisson_tolerance > 0. ?
+            parameters.linear_solver.pressure_poisson_tolerance :
+            automatic_pressure_poisson_tolerance(schur);
+      const PressureLaplaceInverse laplace_inverse(d.get_pressure_laplacian(),
+                                                   *laplace_amg,
+                                                   poisson_tolerance);
+      const MomentumOperator<dim> *momentum_operator
+        = d.get_momentum_operator();
+      const SaddlePointOperator system
+        = momentum_operator ? SaddlePointOperator(
+            [momentum_operator](TrilinosWrappers::MPI::Vector       &dst,
+                                const TrilinosWrappers::MPI::Vector &src) {
+              momentum_operator->vmult(dst, src);
+            },
+            d.get_constrained_gradient()) :
+                              SaddlePointOperator(d.get_system_matrix());
+      SchurIngredients ingredients;
+      ingredients.system              = &system;
+      ingredients.laplace_inverse     = &laplace_inverse;
+      ingredients.mass_inverse        = mass_ilu.get();
+      ingredients.inverse_lumped_mass = &d.get_inverse_lumped_mass();
+      ingredients.viscous_weight
+        = stage.theta_implicit * d.get_viscosity_model().reference_viscosity();
+      ingredients.inertial_weight
+        = stage.mass_coefficient(parameters.properties.density);
+      const auto schur_inverse
+        = make_schur_complement_inverse(schur, ingredients);
+      const BlockTriangularPreconditioner<dim> preconditioner(
+        system,
+        *velocity_inverse,
+        *schur_inverse,
+        d.get_owned_partitioning()[0],
+        d.get_communicator(),
+        timer);
+      const unsigned int max_iterations
+        = parameters.linear_solver.maximum_iterations;
+
+      while (true)
+        {
+          const unsigned int allowed
+            = fresh ?
+                max_iterations :
+                std::min(max_iterations,
+                         2 * velocity_inverse->reference_iterations() + 20);
+          SolverControl             control(allowed, tolerance, false, false);
+          SolverFGMRES<BlockVector> solver(
+            control,
+            SolverFGMRES<BlockVector>::AdditionalData(
+              parameters.linear_solver.krylov_size));
+          newton_update = 0;
+          try
+            {
+              solver.solve(system,
+                           newton_update,
+                           d.get_system_rhs(),
+                           preconditioner);
+            }
+          catch (const SolverControl::NoConvergence &e)
+            {
+              if (!fresh)
+                {
+                  // the kept inverse no longer fits the matrix
+                  velocity_inverse->rebuild(linearisation);
+                  fresh = true;
+                  continue;
+                }
+              std::ostringstream message;
+              message << "The linear solver (FGMRES) did not converge in "
+                      << e.last_step << " iterations (residual "
+                      << e.last_residual << ", target " << tolerance << ").";
+              if (!std::isfinite(e.last_residual))
+                message << " "
+                        << locate_non_finite(system,
+                                             d.get_system_rhs(),
+                                             *velocity_inverse,
+                                             *mass_ilu,
+                                             laplace_inverse);
+              throw SolverFailure(
+                SolverFailure::Kind::linear,
+                message.str(),
+                "Reduce 'Time step' in subsection 'Time', or raise 'Maximum "
+                "iterations' in subsection 'Linear solver'.");
+            }
+          d.distribute_update(newton_update);
+          pressure_poisson_solves += laplace_inverse.solves;
+          pressure_poisson_iterations += laplace_inverse.iterations;
+          velocity_inverse->record_solve(control.last_step(), fresh);
+          return control.last_step();
+        }
+    }
+
+
+
+    template <int dim>
+    std::size_t
+    SaddlePointSolver<dim>::memory_consumption() const
+    {
+      return (velocity_inverse ? velocity_inverse->memory_consumption() : 0)
+             + (laplace_amg ? laplace_amg->memory_consumption() : 0);
+    }
+
+    template class SaddlePointSolver<2>;
+    template class SaddlePointSolver<3>;
+  } // namespace fluid
+} // namespace particulate

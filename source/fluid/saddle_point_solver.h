@@ -1,0 +1,130 @@
+#ifndef particulate_fluid_saddle_point_solver_h
+#define particulate_fluid_saddle_point_solver_h
+
+#include <particulate/fluid/flow_discretisation.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_precondition.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "velocity_block_inverse.h"
+
+namespace particulate {
+  namespace fluid {
+    /**
+     * The linear solver of a Newton step: FGMRES on the saddle-point
+     * system of a FlowDiscretisation with the block-triangular
+     * preconditioner, made of the velocity block inverse ('Velocity
+     * preconditioner') and a Schur complement inverse ('Schur complement
+     * approximation'), and the preconditioners of L_p (ML AMG) and M_p
+     * (ILU) that the latter uses.
+     *
+     * What it builds it keeps until told that its source changed: the
+     * facade (NavierStokes) reports new Jacobians, new constrained nodes
+     * and mesh motion.
+     */
+    template <int dim>
+    class SaddlePointSolver
+    {
+    public:
+      using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+      SaddlePointSolver(const FluidParameters            &parameters,
+                        dealii::TimerOutput              &timer,
+                        const dealii::ConditionalOStream &log);
+      ~SaddlePointSolver();
+
+      /** Drop everything built from the discretisation's matrices (before
+       *  they are cleared for new DoFs). */
+      void
+      clear();
+
+      /** The velocity block inverse for the DoFs of @p discretisation
+       *  (after its distribute_dofs()). */
+      void
+      setup(const FlowDiscretisation<dim> &discretisation);
+
+      /** The velocity DoF handler of the geometric multigrid (what the
+       *  matrix-free operator works on), or nullptr. */
+      const dealii::DoFHandler<dim> *
+      velocity_dof_handler() const;
+
+      /** A new Jacobian was assembled or linearised. */
+      void
+      matrix_changed();
+
+      /** The constraints were rebuilt (the velocity DoFs inside bodies). */
+      void
+      set_masked_dofs(const std::vector<dealii::types::global_dof_index> &dofs);
+
+      /** The constrained nodes changed: L_p is rebuilt by the next solve. */
+      void
+      pressure_operator_changed()
+      {
+        schur_ingredients_are_current = false;
+      }
+
+      /** Before the mesh moves: what M_p, B and the mesh determine goes. */
+      void
+      geometry_changing();
+
+      /** After the mesh moved by a step's ALE motion. */
+      void
+      mesh_moved();
+
+      /** After the solution was carried to a freshly adapted mesh. */
+      void
+      mesh_replaced();
+
+      /** Drop the kept preconditioners (at a checkpoint). */
+      void
+      reset();
+
+      /**
+       * Solve J @p update = rhs for the Newton step of @p stage to the
+       * absolute @p tolerance; the update takes the homogeneous
+       * constraints. Returns the FGMRES iterations. Throws SolverFailure.
+       */
+      unsigned int
+      solve(const Stage             &stage,
+            const double             tolerance,
+            FlowDiscretisation<dim> &discretisation,
+            BlockVector             &update);
+
+      /** Inner CG solves with L_p since the start, and their iterations. */
+      std::pair<unsigned long, unsigned long>
+      pressure_poisson_counts() const
+      {
+        return {pressure_poisson_solves, pressure_poisson_iterations};
+      }
+
+      std::size_t
+      memory_consumption() const;
+
+    private:
+      /** L_p and its AMG, M_p and its ILU. */
+      void
+      build_schur_ingredients(FlowDiscretisation<dim> &discretisation);
+
+      const FluidParameters            &parameters;
+      dealii::TimerOutput              &timer;
+      const dealii::ConditionalOStream &log;
+
+      std::unique_ptr<VelocityBlockInverse<dim>> velocity_inverse;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> laplace_amg;
+      /// the near-null space of L_p's AMG: it depends on the mesh only
+      std::vector<double> laplace_near_null_space;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
+      bool schur_ingredients_are_current = false;
+      /// inner L_p solves and their CG iterations, summed over the run
+      unsigned long pressure_poisson_solves     = 0;
+      unsigned long pressure_poisson_iterations = 0;
+    };
+  } // namespace fluid
+} // namespace particulate
+
+#endif
