@@ -10,8 +10,11 @@ PATH is either the output folder of a `particulate` run of
 prm/oscillating-cylinder/*.prm (its particle_0.dat holds the force F_x, F_y
 per unit depth in 2D, on the whole cylinder of a 3D slab run, which is
 divided by the cylinder's 'Length' read from the folder's
-used_parameters.prm) or the forces.dat of
-validation_oscillating_cylinder_body_fitted (c_d, c_l directly). The first
+used_parameters.prm) or a series file with the columns time, c_d, c_l: the
+forces.dat of validation_oscillating_cylinder_body_fitted, or a committed
+series doc/validation/oscillating-cylinder-*.dat (the last comment line
+before the numbers names the columns; a line '# method: fbm' marks the
+series of an FBM run, any other file is body-fitted). The first
 body-fitted run given is the reference of the total-variation ratio.
 
 Prints, per run and per period of T = 4 s, the drag extrema beside the
@@ -19,7 +22,9 @@ published +3.24 / -3.26 (Wan & Turek), raw and of the curve averaged over
 0.1 s (spikes of single steps do not count), the largest |c_l|, and the total
 variation of c_d over the period (how oscillatory the curve is). With
 --doc writes DOC_DIR/NAME-drag.png and NAME-lift.png (NAME defaults to
-oscillating-cylinder).
+oscillating-cylinder). --series FILE writes time, c_d and c_l of the last
+run given, the series this script reads back (the committed
+doc/validation/oscillating-cylinder-<run>.dat).
 
 The checks (exit status 1 if one fails): with --max-peak-error, every
 complete period of every run that is not body-fitted has the extrema of its
@@ -42,11 +47,24 @@ PUBLISHED_MAX, PUBLISHED_MIN = 3.24, -3.26
 
 
 def read_table(path):
+    """The columns of a series, by the names in the last comment line
+    before the numbers."""
+    header, rows = [], []
     with open(path) as f:
-        header = f.readline().lstrip("#").split()
-        rows = [list(map(float, line.split())) for line in f
-                if line.strip() and not line.startswith("#")]
+        for line in f:
+            if line.startswith("#"):
+                if not rows:
+                    header = line.lstrip("#").split()
+            elif line.strip():
+                rows.append(list(map(float, line.split())))
     return {name: [r[i] for r in rows] for i, name in enumerate(header)}
+
+
+def is_fbm_series(path):
+    """Whether a series file says it is that of an FBM run."""
+    with open(path) as f:
+        return any(line.split() == ["#", "method:", "fbm"] for line in f
+                   if line.startswith("#"))
 
 
 def span_of(folder):
@@ -76,7 +94,7 @@ def coefficients(path):
         return (table["time"], [scale * f for f in table["F_x"]],
                 [scale * f for f in table["F_y"]], False)
     table = read_table(path)
-    return table["time"], table["c_d"], table["c_l"], True
+    return table["time"], table["c_d"], table["c_l"], not is_fbm_series(path)
 
 
 def smoothed(t, values, width=0.1):
@@ -134,6 +152,8 @@ def main():
     parser.add_argument("--label", default=None,
                         help="the label of a single run given as a folder "
                         "(as the validation tests pass it)")
+    parser.add_argument("--series", default=None,
+                        help="write time, c_d, c_l of the last run to this file")
     args = parser.parse_args()
 
     runs = []
@@ -166,6 +186,20 @@ def main():
                   f"{p['lift']:.3f} | {p['tv']:.2f} | {ratio:.2f} |")
 
     failures = check_against_reference(runs, reference, args)
+
+    if args.series:
+        label, path, t, c_d, c_l, fitted = runs[-1]
+        with open(args.series, "w") as f:
+            f.write(f"# oscillating cylinder, {label}: the forces of {path}\n"
+                    "# columns: time [s]; c_d = 2 F_x / (rho U^2 D L), c_l = "
+                    "2 F_y / (rho U^2 D L), L = 1 in 2D, the cylinder's "
+                    "'Length' in 3D\n")
+            if not fitted:
+                f.write("# method: fbm\n")
+            f.write("# time c_d c_l\n")
+            for row in zip(t, c_d, c_l):
+                f.write("%.12g %.12g %.12g\n" % row)
+        print(f"wrote {args.series}")
 
     if args.doc:
         os.makedirs(args.doc, exist_ok=True)

@@ -6,8 +6,8 @@ flat: after step 100 it may not grow by more than 2 %.
 
     scripts/validation/soak.py [--binary build/particulate] [--ranks 2]
                                [--steps 2000] [--output output/soak]
-                               [--series doc/validation/soak/memory.dat]
-                               [--figure doc/validation/soak/memory.png]
+                               [--series doc/validation/soak.dat]
+                               [--figure doc/validation/soak.png]
                                [--replot]
 
 The case is prm/oscillating-cylinder/slab-3d-laplace-alpha.prm (a cylinder
@@ -100,8 +100,8 @@ def main():
     parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--steps", type=int, default=2000)
     parser.add_argument("--output", default="output/soak")
-    parser.add_argument("--series", default="doc/validation/soak/memory.dat")
-    parser.add_argument("--figure", default="doc/validation/soak/memory.png")
+    parser.add_argument("--series", default="doc/validation/soak.dat")
+    parser.add_argument("--figure", default="doc/validation/soak.png")
     parser.add_argument("--replot", action="store_true")
     args = parser.parse_args()
     if not args.replot:

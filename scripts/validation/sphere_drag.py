@@ -5,7 +5,7 @@
 scripts/validation/sphere_drag.sh.
 
     scripts/validation/sphere_drag.py output/fixed-sphere-r* output/moving-sphere-r*
-        [--doc doc/validation/sphere-drag] [--plot-tags TAG ...]
+        [--doc doc/validation] [--plot-tags TAG ...]
 
 Both flows start impulsively at t = 0, so at equal times they are the same
 physical flow seen from two frames. For each folder it prints the drag

@@ -9,7 +9,7 @@
 # suffix -kappa) and with 16 (-kappa-s16; at Refinements = 0 there is a single
 # level, and 4 sweeps move the vertices only part of the way).
 # Runs on 2 MPI ranks through ten_cate_levels.sh, then draws each family
-# into one set of figures, doc/validation/ten-cate-<case>-kappa{,-nearest}/:
+# into one set of figures, output/fig-ten-cate-<case>-kappa{,-nearest}/:
 #   END_TIME=1.0 scripts/validation/ten_cate_adaptation.sh e4  (about 1 h 15 min)
 #   scripts/validation/ten_cate_adaptation.sh e3 --r0-only     (about 30 min)
 # END_TIME stops every run there (E4 peaks at t = 0.8-0.9 s). A run whose
@@ -68,5 +68,5 @@ for covered in "" nearest; do
     done
   done
   /usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" \
-    --label "${labels[@]}" --doc "doc/validation/ten-cate-${case_name}-kappa${suffix}"
+    --label "${labels[@]}" --doc "output/fig-ten-cate-${case_name}-kappa${suffix}"
 done

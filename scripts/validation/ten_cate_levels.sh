@@ -2,11 +2,11 @@
 # Refinement study of a ten Cate case: run prm/ten-cate/ten-cate-<case>.prm
 # at the given refinement levels (output/ten-cate-<case>-r<level>/) on 2 MPI
 # ranks, then compare them with the experiment (scripts/validation/ten_cate.py,
-# figures into doc/validation/).
+# figures and table into output/fig-ten-cate-<case>/).
 #   scripts/validation/ten_cate_levels.sh e4 0 1
 # COVERED_NODES=nearest runs them with 'Covered nodes = nearest' (subsection
 # Particles) into output/ten-cate-<case>-r<level>-nearest/. FIGURES=<dir>
-# puts the figures and table there instead of doc/validation. EXTRA_PRM is
+# puts the figures and table there instead. EXTRA_PRM is
 # appended to each case file (printf %b: '\n' for new lines), TAG to the
 # folder names and labels, e.g.
 #   EXTRA_PRM='subsection Time\n set Time step = 0.0025\nend\n' TAG=dt2.5ms
@@ -34,4 +34,4 @@ for level in "$@"; do
   folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}${TAG:+, $TAG}")
 done
 /usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}" \
-  --doc "${FIGURES:-doc/validation}"
+  --doc "${FIGURES:-output/fig-ten-cate-${case_name}}"

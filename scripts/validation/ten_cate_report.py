@@ -1,18 +1,25 @@
 #!/usr/bin/python3
 """The ten Cate report (doc/validation/ten-cate.md) from its committed series.
 
-    scripts/validation/ten_cate_report.py [--dir doc/validation/ten-cate]
-        [--min-gap 2]
+    scripts/validation/ten_cate_report.py [--series doc/validation/ten-cate.dat]
+        [--figure doc/validation/ten-cate.png] [--min-gap 2]
+        [--collect BUILD/tests/validation [--commit HASH]]
 
-reads DIR/e1.dat ... e4.dat (time [s], settling velocity [m/s], gap h/d_p:
-the files that `ctest -R validation_ten_cate` writes as
-build/tests/validation/ten-cate-<case>-series.dat), prints the report's
-table of u_max against the experiment (taken where the gap is at least
---min-gap, as the tests do) and draws DIR/velocity.png: the settling
-velocity against time and against the gap, with the experiment's u_max.
+reads SERIES (one row per step of E1-E4: case, time [s], settling velocity
+[m/s], gap h/d_p), prints the report's table of u_max against the experiment
+(taken where the gap is at least --min-gap, as the tests do) and draws
+FIGURE: the settling velocity against time and against the gap, with the
+experiment's u_max.
+
+--collect first writes SERIES from the files that `ctest -R
+validation_ten_cate` leaves in the given folder,
+ten-cate-<case>-series.dat (time, settling velocity, gap; written by
+ten_cate.py --series), with a header naming them and the commit (--commit,
+default: the current HEAD) the runs were made on.
 """
 import argparse
 import os
+import subprocess
 
 import matplotlib
 
@@ -23,25 +30,86 @@ import numpy as np  # noqa: E402
 # case: Re, experiment u_max [m/s] (ten Cate et al. 2002, Table II)
 EXPERIMENT = {"e1": (1.5, 0.035986), "e2": (4.1, 0.05718),
               "e3": (11.6, 0.087269), "e4": (31.9, 0.12224)}
+# the End time each validation test runs its case to
+# (tests/validation/CMakeLists.txt)
+END_TIME = {"e1": "2.5", "e2": "2.0", "e3": "1.4", "e4": "0.9"}
+
+
+def collect(folder, series, commit):
+    """SERIES from FOLDER/ten-cate-<case>-series.dat, the numbers copied as
+    they are."""
+    if commit is None:
+        try:
+            commit = subprocess.run(
+                ["git", "rev-parse", "--short", "HEAD"], check=True,
+                capture_output=True, text=True).stdout.strip()
+        except (OSError, subprocess.CalledProcessError):
+            commit = "unknown"
+    header, rows = [], []
+    for case in EXPERIMENT:
+        path = os.path.join(folder, f"ten-cate-{case}-series.dat")
+        if not os.path.exists(path):
+            continue
+        with open(path) as f:
+            for line in f:
+                if line.startswith("#"):
+                    header.append(f"#   {case}: {line[1:].strip()} "
+                                  f"(to t = {END_TIME[case]} s)")
+                elif line.strip():
+                    rows.append(f"{case} {line.strip()}")
+    with open(series, "w") as f:
+        f.write("# ten Cate et al. (2002) E1-E4 as shipped: the runs of the tests "
+                "validation_ten_cate_e1 ... e4\n"
+                "# (prm/ten-cate/ten-cate-<case>.prm as shipped, 2 ranks, 'End time' "
+                "shortened by tests/validation/CMakeLists.txt),\n"
+                f"# code of commit {commit}; each case's series as "
+                "scripts/validation/ten_cate.py --series wrote it:\n")
+        f.write("\n".join(header) + "\n")
+        f.write("# columns: case (e1-e4); time [s]; settling velocity -w [m/s]; "
+                "gap h/d_p = (z - radius) / diameter\n"
+                "# case time settling_velocity gap\n")
+        f.write("\n".join(rows) + "\n")
+    print(f"wrote {series}")
+
+
+def read_series(path):
+    """{case: (t, w, gap)} of SERIES."""
+    columns = {}
+    with open(path) as f:
+        for line in f:
+            words = line.split()
+            if not words or words[0].startswith("#"):
+                continue
+            columns.setdefault(words[0], []).append([float(x) for x in words[1:4]])
+    return {case: tuple(np.array(rows).T) for case, rows in columns.items()}
 
 
 def main():
     parser = argparse.ArgumentParser(
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--dir", default="doc/validation/ten-cate")
+    parser.add_argument("--series", default="doc/validation/ten-cate.dat")
+    parser.add_argument("--figure", default="doc/validation/ten-cate.png")
     parser.add_argument("--min-gap", type=float, default=2.)
+    parser.add_argument("--collect", metavar="FOLDER", default=None,
+                        help="write SERIES from FOLDER/ten-cate-<case>-series.dat "
+                        "first")
+    parser.add_argument("--commit", default=None,
+                        help="with --collect: the commit the runs were made on "
+                        "(default: the current HEAD)")
     args = parser.parse_args()
+    if args.collect:
+        collect(args.collect, args.series, args.commit)
+    series = read_series(args.series)
 
     fig, (ax_t, ax_h) = plt.subplots(1, 2, figsize=(11, 4))
     print("| case | Re | u_max [m/s] | at t [s] | gap h/d_p there | "
           "experiment [m/s] | error |")
     print("|---|---|---|---|---|---|---|")
     for case, (re, u_exp) in EXPERIMENT.items():
-        path = os.path.join(args.dir, f"{case}.dat")
-        if not os.path.exists(path):
+        if case not in series:
             continue
-        t, w, gap = np.loadtxt(path, unpack=True, ndmin=2)
+        t, w, gap = series[case]
         window = np.nonzero(gap >= args.min_gap)[0]
         i = int(window[np.argmax(w[window])])
         error = 100 * (w[i] - u_exp) / u_exp
@@ -62,7 +130,8 @@ def main():
                  "dashed: h/d_p = 2)", fontsize=10)
     ax_t.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.dir, "velocity.png"), dpi=110)
+    fig.savefig(args.figure, dpi=110)
+    print(f"wrote {args.figure}")
 
 
 if __name__ == "__main__":
