@@ -33,8 +33,8 @@ namespace particulate {
        * boundary, or after @p max_steps, and the caller asks the other
        * ranks. Why not GridTools' searches: for a point on a vertex, edge or
        * face deal.II 9.4 collects the cells around it by a loop over all
-       * cells, which made the transfer quadratic in the mesh size (10 min
-       * at 51 200 cells, doc/performance.md).
+       * cells, which made the transfer quadratic in the mesh size
+       * (doc/performance.md).
        */
       template <int dim>
       std::optional<std::pair<typename Triangulation<dim>::active_cell_iterator,

@@ -36,10 +36,9 @@ namespace particulate {
      * from the shear rate of the linearisation point when it depends on
      * it). The velocity multigrid approximates A_s^{-1} and leaves the
      * convection to the outer FGMRES: Chebyshev-Jacobi smoothing of the
-     * full (non-symmetric) Oseen operator diverged on DFG 2D-2 level 3 with
-     * power-iteration eigenvalue estimates and needed 36 instead of 16
-     * FGMRES iterations per Newton step with Lanczos estimates (see
-     * doc/performance.md).
+     * full (non-symmetric) Oseen operator diverged with power-iteration
+     * eigenvalue estimates and needed more than twice the FGMRES iterations
+     * with Lanczos estimates (doc/performance.md).
      *
      * Q2 vector fields, 3^dim Gauss points, sum factorisation. Rows of
      * constrained DoFs (Dirichlet boundaries, and the masked DoFs inside
