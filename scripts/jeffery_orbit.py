@@ -24,8 +24,9 @@ C = tan(theta) sqrt(L^2 sin^2 phi + cos^2 phi) / L, and phi follows the
 same closed form whatever C is. The script prints C at the start and its
 largest relative departure from it over the run.
 
---series writes time, phi and Jeffery's phi (a small whitespace table for
-the figures of doc/validation-jeffery.md).
+--series writes time, phi and Jeffery's phi, and in 3D the orbit constant
+C (a small whitespace table for the figures and the orbit-constant table of
+doc/validation/jeffery-orbit.md).
 """
 import argparse
 import math
@@ -137,11 +138,15 @@ def main():
               % (error, args.max_period_error))
         failed = True
     if args.series:
+        # in 3D a fourth column: the orbit constant C
+        with_orbit = bool(np.all(np.isfinite(orbit)))
         with open(args.series, "w") as f:
-            f.write("# time phi phi_jeffery  (%s)\n" % args.label)
+            f.write("# time phi phi_jeffery%s  (%s)\n"
+                    % (" C" if with_orbit else "", args.label))
             stride = max(1, len(t) // 400)
             for i in range(0, len(t), stride):
-                f.write("%.6g %.8g %.8g\n" % (t[i], phi[i], exact[i]))
+                f.write("%.6g %.8g %.8g" % (t[i], phi[i], exact[i]))
+                f.write(" %.6g\n" % orbit[i] if with_orbit else "\n")
     sys.exit(1 if failed else 0)
 
 
