@@ -302,7 +302,7 @@ namespace particulate {
         if (momentum_operator)
           // only the gradient block B^T (velocity rows, pressure columns),
           // without constraints: they enter by scaling (see
-          // build_schur_complement_approximation)
+          // build_pressure_laplacian)
           for (unsigned int c = 0; c < dim + 1; ++c)
             for (unsigned int d = 0; d < dim + 1; ++d)
               coupling[c][d]
