@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <thread>
 
@@ -49,6 +50,32 @@ namespace particulate {
       }
     } // namespace
 
+    std::array<int, 3>
+    DistanceMap::grid_counts(const BoundingBox &box, const double h)
+    {
+      std::array<int, 3> counts{};
+      for (int d = 0; d < 3; ++d)
+        counts[d]
+          = std::max(static_cast<int>(std::ceil(box.extent()[d] / h - 1e-9))
+                       + 1,
+                     2);
+      return counts;
+    }
+
+    std::size_t
+    DistanceMap::planned_memory_bytes(const BoundingBox &shape_box,
+                                      const Parameters  &prm)
+    {
+      const BoundingBox box    = shape_box.enlarged(prm.margin);
+      double            points = 1.;
+      for (int d = 0; d < 3; ++d)
+        points *= std::ceil(box.extent()[d] / prm.spacing - 1e-9) + 1.;
+      // a value and a normal per point, single precision
+      const double bytes = points * 4. * sizeof(float);
+      return bytes < 1e19 ? static_cast<std::size_t>(bytes) :
+                            std::numeric_limits<std::size_t>::max();
+    }
+
     DistanceMap
     DistanceMap::build(const Shape &shape, const Parameters &prm)
     {
@@ -70,14 +97,10 @@ namespace particulate {
       const BoundingBox box = shape_box.enlarged(prm.margin);
       DistanceMap       map;
       map.h        = prm.spacing;
+      map.n        = grid_counts(box, map.h);
       double total = 1.;
       for (int d = 0; d < 3; ++d)
-        {
-          map.n[d]
-            = static_cast<int>(std::ceil(box.extent()[d] / map.h - 1e-9)) + 1;
-          map.n[d] = std::max(map.n[d], 2);
-          total *= map.n[d];
-        }
+        total *= map.n[d];
       if (total > 2147483647.)
         {
           std::ostringstream msg;

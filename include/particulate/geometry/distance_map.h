@@ -89,6 +89,15 @@ namespace particulate {
                    const std::string  &cache_dir,
                    bool               *loaded_from_cache = nullptr);
 
+      /**
+       * The bytes a map of a solid with bounding box @p shape_box would take
+       * with @p parameters (the grid build() would lay out), known before
+       * any work.
+       */
+      static std::size_t
+      planned_memory_bytes(const BoundingBox &shape_box,
+                           const Parameters  &parameters);
+
       /** The file name build_cached() uses for these inputs (no folder). */
       static std::string
       cache_file_name(const TriangleMesh &mesh, const Parameters &parameters);
@@ -242,6 +251,11 @@ namespace particulate {
       // lookup of a cached cell).
       void
       check_not_empty(const char *caller) const;
+
+      /** Grid points along each axis over @p box (already enlarged) at
+       *  spacing @p h, at least two. */
+      static std::array<int, 3>
+      grid_counts(const BoundingBox &box, const double h);
 
       [[noreturn]] static void
       throw_empty(const char *caller);
