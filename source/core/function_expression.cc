@@ -112,6 +112,14 @@ namespace particulate {
 
       const std::string variables
         = dim == 2 ? "x,y,t" : (dim == 3 ? "x,y,z,t" : "x,t");
+      for (const auto &[name, value] : constant_map)
+        for (const std::string &variable :
+             dealii::Utilities::split_string_list(variables, ','))
+          if (name == variable)
+            throw std::runtime_error(
+              "The entry '" + entry_name + " constants' declares '" + name
+              + "', which is one of the variables " + variables
+              + "; give the constant another name.");
       auto function
         = std::make_unique<dealii::FunctionParser<dim>>(n_components);
       try
@@ -135,6 +143,16 @@ namespace particulate {
             "Cannot evaluate the entry '" + entry_name + "' = '" + expression
             + "': " + one_line_explanation(e) + " Use the variables "
             + variables + " and the constants you declare.");
+        }
+      catch (...)
+        {
+          // muparser's own errors (e.g. a constant's name it cannot define)
+          // are not deal.II exceptions
+          throw std::runtime_error(
+            "Cannot evaluate the entry '" + entry_name + "' = '" + expression
+            + "' with the constants of '" + entry_name
+            + " constants'. Use the variables " + variables
+            + " and constants named like C or U_0.");
         }
       return function;
     }

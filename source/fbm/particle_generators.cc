@@ -44,6 +44,12 @@ namespace particulate {
     {
       std::vector<Eigen::Vector3d> c;
       const unsigned int           nz = dim == 3 ? counts[2] : 1;
+      if (double(counts[0]) * counts[1] * nz > maximum_generated_particles)
+        throw std::runtime_error(
+          "the lattice has " + std::to_string(counts[0]) + " x "
+          + std::to_string(counts[1]) + " x " + std::to_string(nz)
+          + " particles, more than the 10 million a run can hold (every "
+            "rank keeps every particle).");
       for (unsigned int k = 0; k < nz; ++k)
         for (unsigned int j = 0; j < counts[1]; ++j)
           for (unsigned int i = 0; i < counts[0]; ++i)
@@ -163,8 +169,13 @@ namespace particulate {
     {
       const Eigen::Vector3d size   = upper - lower;
       const double          region = dim == 3 ? size.prod() : size[0] * size[1];
-      return static_cast<unsigned int>(
-        std::lround(solid_fraction * region / shape.volume()));
+      const double          n      = solid_fraction * region / shape.volume();
+      if (!(n <= maximum_generated_particles))
+        throw std::runtime_error(
+          "the solid fraction gives " + std::to_string(n)
+          + " particles of this shape in the region, more than the 10 "
+            "million a run can hold (every rank keeps every particle).");
+      return static_cast<unsigned int>(std::lround(n));
     }
 
 

@@ -27,6 +27,14 @@ namespace particulate {
     };
 
     /**
+     * The most particles a generator makes: the rigid engine holds every
+     * particle on every rank (a few kB each with its contacts), so ten
+     * million is beyond any machine's ranks; larger counts are refused
+     * before anything is allocated.
+     */
+    constexpr double maximum_generated_particles = 1e7;
+
+    /**
      * Particles on a regular lattice: centres first + (i, j, k) * spacing
      * for i < counts[0], j < counts[1], k < counts[2] (x fastest), all with
      * one orientation. A 2D run uses the first two counts.
@@ -37,7 +45,9 @@ namespace particulate {
       Eigen::Vector3d             spacing = Eigen::Vector3d::Zero(); ///< [m]
       std::array<unsigned int, 3> counts  = {{1, 1, 1}};
 
-      /** The centres [m] of a @p dim-dimensional run. */
+      /** The centres [m] of a @p dim-dimensional run.
+       * @throw std::runtime_error for more than
+       *   maximum_generated_particles */
       std::vector<Eigen::Vector3d>
       centres(const unsigned int dim) const;
     };
