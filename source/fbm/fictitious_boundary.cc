@@ -1,6 +1,7 @@
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/geometry/cylinder.h>
+#include <particulate/geometry/mapped_surface.h>
 #include <particulate/geometry/pose.h>
 #include <particulate/geometry/sphere.h>
 
@@ -56,7 +57,8 @@ namespace particulate {
       if (marking != Marking::inside)
         throw std::invalid_argument(engine_marks_inside_only);
       engine = std::make_unique<cuda::ContainmentEngine>(backend);
-      engine_shapes.clear();
+      engine_spheres.clear();
+      engine_maps.clear();
     }
 
 
@@ -235,19 +237,60 @@ namespace particulate {
 
 
     template <int dim>
-    double
-    FictitiousBoundary<dim>::engine_sphere_radius(const geometry::Shape &shape)
+    int
+    FictitiousBoundary<dim>::engine_shape(const geometry::Shape &shape)
     {
+      if (const auto *mesh
+          = dynamic_cast<const geometry::MappedSurface *>(&shape))
+        {
+          const void *key = &mesh->map();
+          auto        map
+            = std::find_if(engine_maps.begin(),
+                           engine_maps.end(),
+                           [&](const auto &m) { return m.first == key; });
+          if (map == engine_maps.end())
+            {
+              const geometry::DistanceMapData data = mesh->map().export_data();
+              cuda::DistanceMapData           upload;
+              upload.nx = data.nx;
+              upload.ny = data.ny;
+              upload.nz = data.nz;
+              std::copy_n(data.origin, 3, upload.origin);
+              std::copy_n(data.spacing, 3, upload.spacing);
+              upload.values = data.values;
+              engine_maps.emplace_back(key, engine->add_distance_map(upload));
+              map = std::prev(engine_maps.end());
+            }
+          return map->second;
+        }
+      double radius = 0.;
       if (shape.kind() == geometry::ShapeKind::sphere)
-        return static_cast<const geometry::Sphere &>(shape).radius();
-      if (dim == 2 && shape.kind() == geometry::ShapeKind::cylinder)
-        return static_cast<const geometry::Cylinder &>(shape).radius();
-      throw std::invalid_argument(
-        "fbm::FictitiousBoundary: the cuda/ containment engine takes "
-        "spheres (and disks in 2D) only, not a "
-        + shape.name()
-        + "; use 'Containment backend = cpu' in subsection 'Particles' for "
-          "other shapes.");
+        radius = static_cast<const geometry::Sphere &>(shape).radius();
+      else if (dim == 2 && shape.kind() == geometry::ShapeKind::cylinder)
+        radius = static_cast<const geometry::Cylinder &>(shape).radius();
+      else
+        throw std::invalid_argument(
+          "fbm::FictitiousBoundary: the cuda/ containment engine takes "
+          "spheres, surface meshes (and disks in 2D) only, not a "
+          + shape.name()
+          + "; use 'Containment backend = cpu' in subsection 'Particles' for "
+            "other shapes.");
+      // one uploaded one-sphere set per radius, centred at the body origin
+      auto sphere
+        = std::find_if(engine_spheres.begin(),
+                       engine_spheres.end(),
+                       [&](const auto &s) { return s.first == radius; });
+      if (sphere == engine_spheres.end())
+        {
+          cuda::InnerSphereData one;
+          one.cx = {0.f};
+          one.cy = {0.f};
+          one.cz = {0.f};
+          one.r  = {float(radius)};
+          engine_spheres.emplace_back(radius, engine->add_inner_spheres(one));
+          sphere = std::prev(engine_spheres.end());
+        }
+      return sphere->second;
     }
 
 
@@ -260,27 +303,9 @@ namespace particulate {
       std::vector<cuda::BodyInstance> instances(bodies.size());
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const rigid::RigidBody &body   = *bodies[b].body;
-          const double            radius = engine_sphere_radius(body.shape());
-          // one uploaded one-sphere set per radius, centred at the body
-          // origin
-          auto shape
-            = std::find_if(engine_shapes.begin(),
-                           engine_shapes.end(),
-                           [&](const auto &s) { return s.first == radius; });
-          if (shape == engine_shapes.end())
-            {
-              cuda::InnerSphereData sphere;
-              sphere.cx = {0.f};
-              sphere.cy = {0.f};
-              sphere.cz = {0.f};
-              sphere.r  = {float(radius)};
-              engine_shapes.emplace_back(radius,
-                                         engine->add_inner_spheres(sphere));
-              shape = std::prev(engine_shapes.end());
-            }
-          instances[b].shape      = shape->second;
-          const Eigen::Matrix3d R = body.orientation.toRotationMatrix();
+          const rigid::RigidBody &body = *bodies[b].body;
+          instances[b].shape           = engine_shape(body.shape());
+          const Eigen::Matrix3d R      = body.orientation.toRotationMatrix();
           for (unsigned int i = 0; i < 3; ++i)
             {
               for (unsigned int j = 0; j < 3; ++j)

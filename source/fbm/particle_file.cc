@@ -155,6 +155,7 @@ namespace particulate {
                                                        value("axis_z", 1.)),
                                        value("angle", 0.),
                                        where);
+        p.orientation = shape.body_orientation(p.orientation);
         if (column.count("motion"))
           {
             const std::string &m = fields[column.at("motion")];

@@ -244,14 +244,15 @@ namespace particulate {
         to_string(defaults.containment_backend),
         Patterns::Selection(core::selection_of(backend_names)),
         "How the velocity nodes inside the particles are found every step. "
-        "cpu: a hash grid over the nodes and the particles' exact signed "
-        "distances in double precision. cuda: the cuda/ library's "
+        "cpu: a hash grid over the nodes and the particles' signed "
+        "distances in double precision (exact for the analytic shapes, the "
+        "distance map for a mesh). cuda: the cuda/ library's "
         "containment kernel on the GPU (float arithmetic; a node within "
         "about 1e-7 of the particle size from its surface may be "
-        "classified differently than by cpu); needs a CUDA build and a "
-        "device. auto: cuda when a device is present, 'Covered nodes' is "
-        "'inside' and every particle is a sphere (a disk in 2D), cpu "
-        "otherwise.");
+        "classified differently than by cpu); it takes spheres, surface "
+        "meshes and 2D disks; needs a CUDA build and a device. auto: cuda "
+        "when a device is present, 'Covered nodes' is 'inside' and the "
+        "engine takes every particle, cpu otherwise.");
       prm.declare_entry(
         "Covered nodes",
         to_string(defaults.covered_nodes),
@@ -393,10 +394,10 @@ namespace particulate {
                    "a wall.");
       if (containment_backend == ContainmentBackend::cuda)
         for (const ParticleDescription &p : bodies)
-          if (!is_rotation_invariant(*p.shape, dim))
+          if (!containment_engine_takes(*p.shape, dim))
             fail("Containment backend",
-                 "the cuda containment engine takes spheres and 2D disks "
-                 "only, and "
+                 "the cuda containment engine takes spheres, surface meshes "
+                 "and 2D disks only, and "
                    + p.origin + " is a " + p.shape->name()
                    + "; set 'cpu' or 'auto'.");
     }

@@ -222,14 +222,14 @@ namespace particulate {
                     const unsigned int      dim,
                     const Place            &place)
       {
-        ParticleDescription p
-          = particle_of(shapes.find(Utilities::trim(prm.get("Shape")),
-                                    place("Shape")),
-                        place());
+        const auto &shape
+          = shapes.find(Utilities::trim(prm.get("Shape")), place("Shape"));
+        ParticleDescription p = particle_of(shape, place());
         p.position
           = internal::read_vector(prm.get("Position"), dim, place("Position"));
-        p.orientation = read_orientation(prm, dim, place);
-        p.velocity    = read_optional_vector(prm, "Velocity", dim, place);
+        p.orientation
+          = shape.body_orientation(read_orientation(prm, dim, place));
+        p.velocity = read_optional_vector(prm, "Velocity", dim, place);
         const std::string omega = prm.get("Angular velocity");
         if (!Utilities::trim(omega).empty())
           p.angular_velocity
@@ -295,12 +295,21 @@ namespace particulate {
           = internal::read_numbers(prm.get("Counts"), dim, place("Counts"));
         for (unsigned int d = 0; d < dim; ++d)
           lattice.counts[d] = static_cast<unsigned int>(counts[d]);
-        const Eigen::Quaterniond q = read_orientation(prm, dim, place);
-        const Eigen::Vector3d    v
+        const Eigen::Quaterniond q
+          = shape.body_orientation(read_orientation(prm, dim, place));
+        const Eigen::Vector3d v
           = read_optional_vector(prm, "Velocity", dim, place);
         const ParticleMotion             motion = read_motion(prm);
         std::vector<ParticleDescription> particles;
-        const auto                       centres = lattice.centres(dim);
+        std::vector<Eigen::Vector3d>     centres;
+        try
+          {
+            centres = lattice.centres(dim);
+          }
+        catch (const std::runtime_error &e)
+          {
+            internal::fail_at(place("Counts"), e.what());
+          }
         for (unsigned int i = 0; i < centres.size(); ++i)
           {
             ParticleDescription p = particle_of(shape,
@@ -367,7 +376,8 @@ namespace particulate {
         fill.solid_fraction     = prm.get_double("Solid fraction");
         fill.seed               = prm.get_integer("Seed");
         fill.random_orientation = prm.get_bool("Random orientation");
-        const Eigen::Quaterniond  q = read_orientation(prm, dim, place);
+        const Eigen::Quaterniond q
+          = shape.body_orientation(read_orientation(prm, dim, place));
         std::vector<OccupiedBall> occupied;
         for (const auto &p : placed)
           occupied.push_back({p.position, placement_radius(*p.shape, dim)});

@@ -19,6 +19,7 @@
 #include <particulate/fluid/navier_stokes.h>
 #include <particulate/fluid/run_frame.h>
 #include <particulate/geometry/half_space.h>
+#include <particulate/geometry/mapped_surface.h>
 #include <particulate/rigid/world.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -471,14 +472,14 @@ namespace particulate {
       r.interface = std::make_unique<FictitiousBoundary<dim>>(*r.flow);
       r.interface->set_marking(marking_of<dim>(particle_p.covered_nodes));
       r.interface->setup();
-      // the engine marks the nodes inside spheres and disks only: 'auto'
-      // keeps the hash grid for other markings and shapes (checked for
-      // 'cuda' when parsing)
+      // the engine marks the nodes inside spheres, disks and surface
+      // meshes only: 'auto' keeps the hash grid for other markings and
+      // shapes (checked for 'cuda' when parsing)
       const bool engine_takes_all_shapes
         = std::all_of(particle_p.bodies.begin(),
                       particle_p.bodies.end(),
                       [](const ParticleDescription &p) {
-                        return is_rotation_invariant(*p.shape, dim);
+                        return containment_engine_takes(*p.shape, dim);
                       });
       if (particle_p.containment_backend == ContainmentBackend::cuda
           || (particle_p.containment_backend == ContainmentBackend::automatic
@@ -513,12 +514,28 @@ namespace particulate {
           if (particles.bodies[i].motion == ParticleMotion::free)
             density_ratios.push_back(particles.bodies[i].density / rho_f);
         }
+      std::vector<std::string> mesh_names;
+      std::vector<double>      mesh_thicknesses, map_spacings;
+      for (const ParticleDescription &p : particles.bodies)
+        if (const auto *mesh
+            = dynamic_cast<const geometry::MappedSurface *>(p.shape.get());
+            mesh
+            && std::find(mesh_names.begin(), mesh_names.end(), p.shape_name)
+                 == mesh_names.end())
+          {
+            mesh_names.push_back(p.shape_name);
+            mesh_thicknesses.push_back(2. * mesh->map().deepest_inside());
+            map_spacings.push_back(mesh->map().spacing());
+          }
       for (const std::string &warning :
            {set_up_warnings::resolution(sizes, cell_sizes_at_particles()),
             set_up_warnings::coupling_stability(
               density_ratios,
               particles.added_mass_coefficient,
-              dim)})
+              dim),
+            set_up_warnings::thin_surface_meshes(mesh_names,
+                                                 mesh_thicknesses,
+                                                 map_spacings)})
         if (!warning.empty())
           r.pcout << warning << std::endl;
     }

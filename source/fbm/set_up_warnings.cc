@@ -82,6 +82,29 @@ namespace particulate {
                 << " (the default is 1).";
         return message.str();
       }
+
+
+
+      std::string
+      thin_surface_meshes(const std::vector<std::string> &names,
+                          const std::vector<double>      &thicknesses,
+                          const std::vector<double>      &spacings)
+      {
+        std::ostringstream message;
+        for (unsigned int i = 0; i < names.size(); ++i)
+          if (thicknesses[i] < 2. * spacings[i])
+            message << (message.tellp() > 0 ? "\n" : "")
+                    << "Warning: the surface mesh of shape '" << names[i]
+                    << "' is only " << thicknesses[i]
+                    << " m thick where its distance map resolves it, less "
+                       "than two map cells (spacing "
+                    << spacings[i]
+                    << " m): its thin parts may let nodes and contacts "
+                       "through. Set a smaller 'Map spacing' in subsection "
+                       "'Particles / Shape "
+                    << names[i] << "'.";
+        return message.str();
+      }
     } // namespace set_up_warnings
   }   // namespace fbm
 } // namespace particulate

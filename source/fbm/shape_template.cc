@@ -5,12 +5,17 @@
 #include <particulate/geometry/cylinder.h>
 #include <particulate/geometry/ellipsoid.h>
 #include <particulate/geometry/elliptic_cylinder.h>
+#include <particulate/geometry/geometry_error.h>
+#include <particulate/geometry/mesh_body.h>
 #include <particulate/geometry/sphere.h>
 
 #include <array>
+#include <cstdlib>
+#include <filesystem>
 #include <utility>
 
 #include "entry_values.h"
+#include <unistd.h>
 
 namespace particulate {
   namespace fbm {
@@ -19,7 +24,7 @@ namespace particulate {
     namespace {
       using Type = ShapeTemplate::Type;
 
-      const std::array<std::pair<Type, const char *>, 8> type_names{
+      const std::array<std::pair<Type, const char *>, 9> type_names{
         {{Type::sphere, "sphere"},
          {Type::ellipsoid, "ellipsoid"},
          {Type::box, "box"},
@@ -27,7 +32,32 @@ namespace particulate {
          {Type::capsule, "capsule"},
          {Type::disk, "disk"},
          {Type::ellipse, "ellipse"},
-         {Type::rectangle, "rectangle"}}};
+         {Type::rectangle, "rectangle"},
+         {Type::mesh, "mesh"}}};
+
+      /** Where distance maps are cached: $XDG_CACHE_HOME/particulate or
+       *  ~/.cache/particulate; empty (no cache) without either. */
+      std::string
+      distance_map_cache_folder()
+      {
+        if (const char *xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+          return std::string(xdg) + "/particulate/distance-maps";
+        if (const char *home = std::getenv("HOME"); home && *home)
+          return std::string(home) + "/.cache/particulate/distance-maps";
+        return "";
+      }
+
+      /** The largest distance map a run builds: half the machine's memory
+       *  (0, no limit, where it cannot be told). */
+      std::size_t
+      half_the_physical_memory()
+      {
+        const long pages = sysconf(_SC_PHYS_PAGES);
+        const long size  = sysconf(_SC_PAGE_SIZE);
+        return pages > 0 && size > 0 ?
+                 static_cast<std::size_t>(pages) * size / 2 :
+                 0;
+      }
 
       bool
       is_planar(const Type type)
@@ -63,16 +93,43 @@ namespace particulate {
         "Type",
         "sphere",
         Patterns::Selection(
-          "sphere|ellipsoid|box|cylinder|capsule|disk|ellipse|rectangle"),
+          "sphere|ellipsoid|box|cylinder|capsule|disk|ellipse|rectangle|mesh"),
         "The solid, centred at the particle's position and given in its body "
         "frame (rotated by the particle's orientation). 3D runs: 'sphere' "
         "('Radius'), 'ellipsoid' ('Semi-axes' a, b, c along body x, y, z), "
         "'box' ('Half-extents'), 'cylinder' ('Radius', 'Length' along body "
         "z, flat caps), 'capsule' ('Radius', 'Length' of the segment along "
-        "body z between the centres of its hemispherical caps). 2D runs "
+        "body z between the centres of its hemispherical caps), 'mesh' (a "
+        "closed surface mesh: 'File', 'Scale', 'Map spacing'). 2D runs "
         "(prisms of unit depth): 'disk' ('Radius'), 'ellipse' ('Semi-axes' "
         "a, b along body x, y), 'rectangle' ('Half-extents' along body x, "
         "y).");
+      prm.declare_entry(
+        "File",
+        "",
+        Patterns::Anything(),
+        "Mesh: a closed, manifold surface mesh (OFF, STL, OBJ or PLY; a "
+        "relative path starts at the case file's folder). Triangles facing "
+        "inwards are turned outwards. The particle's 'Position' is where the "
+        "mesh's centroid goes, and its orientation turns the mesh as it is "
+        "in the file. Mass, centroid and inertia are the polyhedron's exact "
+        "ones; contacts, the fictitious boundary and the mesh deformation "
+        "read its distance map.");
+      prm.declare_entry("Scale",
+                        "1",
+                        Patterns::Double(0.),
+                        "Mesh: the factor that turns the file's coordinates "
+                        "into metres (0.001 for a file in millimetres).");
+      prm.declare_entry(
+        "Map spacing",
+        "0",
+        Patterns::Double(0.),
+        "Mesh: the grid spacing of its distance map [m]. 0: the smallest "
+        "edge of the mesh's bounding box over 16. The map's distance is "
+        "about h^2 / (8 R) off near a surface of curvature radius R; refine "
+        "it for thin parts (a warning names a body thinner than two map "
+        "cells). Maps are cached by mesh, spacing and margin in "
+        "$XDG_CACHE_HOME/particulate (or ~/.cache/particulate).");
       prm.declare_entry("Radius",
                         "0",
                         Patterns::Double(0.),
@@ -123,8 +180,8 @@ namespace particulate {
                             + (dim == 2 ? "3D" : "2D") + " runs; a "
                             + std::to_string(dim) + "D run takes "
                             + (dim == 2 ? "disk, ellipse or rectangle." :
-                                          "sphere, ellipsoid, box, cylinder "
-                                          "or capsule."));
+                                          "sphere, ellipsoid, box, cylinder, "
+                                          "capsule or mesh."));
       density = prm.get_double("Density");
       if (!(density > 0.))
         internal::fail_at(outline.where(path, "Density"), "must be positive.");
@@ -134,7 +191,9 @@ namespace particulate {
 
       const std::string  size  = size_entry(type);
       const unsigned int n_ext = is_planar(type) ? 2 : 3;
-      if (size == "Radius")
+      if (type == Type::mesh)
+        read_mesh_entries(prm, outline, path);
+      else if (size == "Radius")
         {
           if (!(radius > 0.))
             internal::fail_at(outline.where(path, "Radius"),
@@ -154,6 +213,59 @@ namespace particulate {
         internal::fail_at(outline.where(path, "Length"),
                           "a cylinder needs its length along the body z axis "
                           "[m].");
+    }
+
+
+
+    void
+    ShapeTemplate::read_mesh_entries(const ParameterHandler         &prm,
+                                     const core::InputOutline       &outline,
+                                     const std::vector<std::string> &path)
+    {
+      const std::string file = Utilities::trim(prm.get("File"));
+      if (file.empty())
+        internal::fail_at(outline.where(path, "Type"),
+                          "a mesh needs its surface mesh file in 'File'.");
+      std::filesystem::path resolved(file);
+      if (resolved.is_relative())
+        resolved
+          = std::filesystem::path(outline.filename()).parent_path() / resolved;
+      mesh_file   = resolved.string();
+      mesh_scale  = prm.get_double("Scale");
+      map_spacing = prm.get_double("Map spacing");
+      if (!(mesh_scale > 0.))
+        internal::fail_at(outline.where(path, "Scale"),
+                          "must be positive: it multiplies the mesh file's "
+                          "coordinates to give metres.");
+      if (!std::filesystem::is_regular_file(resolved))
+        internal::fail_at(outline.where(path, "File"),
+                          "there is no file '" + mesh_file
+                            + "' (a relative path starts at the case file's "
+                              "folder).");
+      load_mesh(outline.where(path, "File"));
+    }
+
+
+
+    void
+    ShapeTemplate::load_mesh(const std::string &where)
+    {
+      geometry::MeshBodyOptions options;
+      options.scale        = mesh_scale;
+      options.map_spacing  = map_spacing;
+      options.cache_folder = distance_map_cache_folder();
+      options.memory_limit = half_the_physical_memory();
+      try
+        {
+          const geometry::MeshBody body
+            = geometry::load_mesh_body(mesh_file, options);
+          mesh           = body.shape;
+          frame_rotation = Eigen::Quaterniond(body.file_frame.rotation());
+        }
+      catch (const geometry::GeometryError &e)
+        {
+          internal::fail_at(where, e.what());
+        }
     }
 
 
@@ -184,6 +296,8 @@ namespace particulate {
           case Type::rectangle:
             return std::make_shared<geometry::Box>(
               Eigen::Vector3d(extents[0], extents[1], planar_half_depth));
+          case Type::mesh:
+            return mesh;
           case Type::sphere:
             break;
         }

@@ -326,6 +326,15 @@ namespace particulate {
       return data;
     }
 
+    double
+    DistanceMap::deepest_inside() const
+    {
+      double deepest = 0.;
+      for (const float v : values)
+        deepest = std::max(deepest, -double(v));
+      return deepest;
+    }
+
     std::size_t
     DistanceMap::memory_bytes() const
     {

@@ -29,6 +29,15 @@ namespace particulate {
         return text.str();
       }
 
+      std::string
+      in_three_digits(const double x)
+      {
+        std::ostringstream text;
+        text.precision(3);
+        text << x;
+        return text.str();
+      }
+
       /** The map's spacing: the one asked for, or the automatic one. */
       double
       map_spacing(const BoundingBox &box, const MeshBodyOptions &options)
@@ -63,17 +72,6 @@ namespace particulate {
                                          &from_cache);
       }
 
-      double
-      deepest_map_point(const DistanceMap &map)
-      {
-        double     deepest = 0.;
-        const auto n       = map.n_points();
-        for (int k = 0; k < n[2]; ++k)
-          for (int j = 0; j < n[1]; ++j)
-            for (int i = 0; i < n[0]; ++i)
-              deepest = std::max(deepest, -double(map.value(i, j, k)));
-        return deepest;
-      }
     } // namespace
 
 
@@ -153,7 +151,7 @@ namespace particulate {
       if (options.memory_limit > 0 && bytes > options.memory_limit)
         throw GeometryError(
           source + ": its distance map at spacing "
-          + std::to_string(parameters.spacing) + " m would need "
+          + in_three_digits(parameters.spacing) + " m would need "
           + in_memory_units(double(bytes)) + ", more than the "
           + in_memory_units(double(options.memory_limit))
           + " this run may use; give a larger map spacing (the memory falls "
@@ -162,7 +160,7 @@ namespace particulate {
       body.spacing = parameters.spacing;
       auto map     = std::make_shared<const DistanceMap>(
         build_map(mesh, *surface, parameters, options, body.from_cache));
-      body.deepest_inside = deepest_map_point(*map);
+      body.deepest_inside = map->deepest_inside();
       body.shape          = std::make_shared<const MappedSurface>(surface, map);
       return body;
     }

@@ -339,6 +339,13 @@ main(int argc, char **argv)
   Counts counts;
   for (const fs::path &original : cases)
     {
+      // the files a case names by relative paths (surface meshes) beside
+      // it, as next to the original
+      for (const auto &beside : fs::directory_iterator(original.parent_path()))
+        if (beside.is_regular_file() && beside.path().extension() != ".prm")
+          fs::copy_file(beside.path(),
+                        tmp / beside.path().filename(),
+                        fs::copy_options::overwrite_existing);
       // the shipped file itself must be accepted
       fs::copy_file(original,
                     current_case,

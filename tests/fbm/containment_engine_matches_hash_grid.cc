@@ -2,14 +2,18 @@
 // agree: the hash grid with the bodies' exact signed distances (double) and
 // the cuda/ library's containment engine (float; here on its CPU path,
 // which computes bit for bit what its GPU kernel does, cuda/README.md).
-// Random spheres in the DFG 3D channel (level 0, Q2 nodes) and random disks
-// in the 2D channel (level 2): the same nodes must be marked, by the same
-// body, except nodes closer to a surface than float rounding can resolve
-// (1e-6 of the radius), which are counted and must be rare.
+// Random spheres in the DFG 3D channel (level 0, Q2 nodes), random disks
+// in the 2D channel (level 2), and 60 surface-mesh ellipsoids (one mesh of
+// 5 120 triangles, semi-axes 0.06, 0.04, 0.03 m, its distance map uploaded
+// once) at random poses in the 3D channel: the same nodes must be marked, by
+// the same body, except nodes closer to a surface than float rounding can
+// resolve (1e-6 of the body's size), which are counted and must be rare.
 
 #include <particulate/core/mesh.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/geometry/cylinder.h>
+#include <particulate/geometry/mesh_body.h>
+#include <particulate/geometry/mesh_generators.h>
 #include <particulate/geometry/sphere.h>
 
 #include <deal.II/base/timer.h>
@@ -24,7 +28,9 @@ using namespace particulate;
 namespace {
   template <int dim>
   void
-  compare(const std::string &library_name, testing::Checker &checker)
+  compare(const std::string &library_name,
+          const bool         with_meshes,
+          testing::Checker  &checker)
   {
     const auto parameters = testing::library_case(library_name, "");
     dealii::parallel::fullydistributed::Triangulation<dim> tria(MPI_COMM_WORLD);
@@ -42,15 +48,16 @@ namespace {
     const auto                             material = world.add_material({});
     std::mt19937                           random(11);
     std::uniform_real_distribution<double> x(0.05, 2.0), y(0.05, 0.36),
-      radius(0.02, 0.08), angle(0., 2. * M_PI);
+      radius(0.02, 0.08), angle(0., 2. * M_PI), component(-1., 1.);
     std::vector<unsigned int> ids;
     std::vector<double>       radii;
+    const auto                random_centre = [&]() {
+      return Eigen::Vector3d(x(random), y(random), dim == 3 ? y(random) : 0.);
+    };
     for (unsigned int b = 0; b < 12; ++b)
       {
-        const double                           r = radius(random);
-        const Eigen::Vector3d                  centre(x(random),
-                                     y(random),
-                                     dim == 3 ? y(random) : 0.);
+        const double                           r      = radius(random);
+        const Eigen::Vector3d                  centre = random_centre();
         std::shared_ptr<const geometry::Shape> shape;
         if (dim == 3)
           shape = std::make_shared<geometry::Sphere>(r);
@@ -64,6 +71,31 @@ namespace {
         ids.push_back(
           world.add_body(shape, material, centre, orientation, true));
         radii.push_back(r);
+      }
+    if (with_meshes)
+      {
+        const Eigen::Vector3d  semi_axes(0.06, 0.04, 0.03);
+        geometry::TriangleMesh mesh
+          = geometry::mesh_generators::icosphere(1., 4);
+        for (auto &v : mesh.vertices)
+          v = semi_axes.cwiseProduct(v);
+        const auto ellipsoid
+          = geometry::make_mesh_body(mesh, {}, "the ellipsoid mesh").shape;
+        for (unsigned int b = 0; b < 60; ++b)
+          {
+            const Eigen::Vector3d centre = random_centre();
+            const Eigen::Vector3d axis(component(random),
+                                       component(random),
+                                       component(random));
+            ids.push_back(world.add_body(
+              ellipsoid,
+              material,
+              centre,
+              Eigen::Quaterniond(
+                Eigen::AngleAxisd(angle(random), axis.normalized())),
+              true));
+            radii.push_back(semi_axes.minCoeff());
+          }
       }
     // pointers only once the world holds all bodies
     std::vector<typename fbm::FictitiousBoundary<dim>::Body> bodies;
@@ -97,9 +129,10 @@ namespace {
     char what[200];
     std::snprintf(what,
                   sizeof(what),
-                  "%s: %lu of %lu nodes inside; engine and hash grid differ "
-                  "on %lu nodes off the surfaces (%lu within 1e-6 r)",
+                  "%s%s: %lu of %lu nodes inside; engine and hash grid "
+                  "differ on %lu nodes off the surfaces (%lu within 1e-6 r)",
                   library_name.c_str(),
+                  with_meshes ? " with mesh bodies" : "",
                   inside,
                   n,
                   differ,
@@ -114,7 +147,8 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                         checker;
-  compare<2>("dfg-2d-2", checker);
-  compare<3>("dfg-3d-1z", checker);
+  compare<2>("dfg-2d-2", false, checker);
+  compare<3>("dfg-3d-1z", false, checker);
+  compare<3>("dfg-3d-1z", true, checker);
   return checker.exit_code();
 }

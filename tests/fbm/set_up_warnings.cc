@@ -9,9 +9,15 @@
 //   with the
 //   coefficient it needs, 0.25; ratio 1.1 is not; a sphere (C_a = 1/2) of
 //   ratio 0.5 is at the limit and passes; with the default C = 1 no ratio
-//   is warned about.
+//   is warned about;
+// - thin surface meshes: a plate 4 mm thick (a box mesh of half extents
+//   50, 50, 2 mm) with a map spacing of 3 mm resolves less than two map
+//   cells of thickness and is warned about by name; at the automatic
+//   spacing (its 4 mm over 16) it is not.
 
 #include <particulate/fbm/set_up_warnings.h>
+#include <particulate/geometry/mesh_body.h>
+#include <particulate/geometry/mesh_generators.h>
 
 #include <iostream>
 #include <string>
@@ -63,6 +69,21 @@ main()
   expect(set_up_warnings::coupling_stability({0.01, 0.5}, 1., 2),
          "disks of ratio 0.01 and 0.5, C = 1",
          "");
+  const auto plate = particulate::geometry::mesh_generators::box(
+    Eigen::Vector3d(0.05, 0.05, 0.002),
+    4);
+  for (const double spacing : {0.003, 0.})
+    {
+      particulate::geometry::MeshBodyOptions options;
+      options.map_spacing = spacing;
+      const auto body
+        = particulate::geometry::make_mesh_body(plate, options, "the plate");
+      expect(set_up_warnings::thin_surface_meshes({"plate"},
+                                                  {2. * body.deepest_inside},
+                                                  {body.spacing}),
+             "a 4 mm plate, map spacing " + std::to_string(body.spacing),
+             spacing > 0. ? "shape 'plate' is only" : "");
+    }
   std::cout << (failures == 0 ? "OK" : "FAILED") << std::endl;
   return failures == 0 ? 0 : 1;
 }

@@ -161,17 +161,20 @@ namespace particulate {
       std::vector<double> half_spacing;
       double              largest_half_spacing = 0.;
       /// the engine path: its engine, the node positions as floats, one
-      /// uploaded sphere shape per radius
-      std::unique_ptr<cuda::ContainmentEngine> engine;
-      std::vector<float>                       positions_float;
-      std::vector<std::pair<double, int>>      engine_shapes;
+      /// uploaded sphere shape per radius and one distance map per mesh
+      /// body's map
+      std::unique_ptr<cuda::ContainmentEngine>  engine;
+      std::vector<float>                        positions_float;
+      std::vector<std::pair<double, int>>       engine_spheres;
+      std::vector<std::pair<const void *, int>> engine_maps;
 
       void
       classify_with_engine(const std::vector<Body> &bodies);
-      /** The radius of the one-sphere set that stands for @p shape on the
-       *  engine: a sphere's, or a 2D disk's; other shapes throw. */
-      static double
-      engine_sphere_radius(const geometry::Shape &shape);
+      /** The engine's handle of @p shape, uploaded on first use: a mesh
+       *  body's distance map, or a one-sphere set for a sphere or a 2D
+       *  disk; other shapes throw. */
+      int
+      engine_shape(const geometry::Shape &shape);
       void
       make_half_spacing_consistent();
       /** How far outside a body a node may lie and still be covered, as a

@@ -14,6 +14,15 @@ namespace particulate {
      */
     bool
     is_rotation_invariant(const geometry::Shape &shape, const unsigned int dim);
+
+    /**
+     * Whether the cuda/ containment engine can mark the nodes inside a body
+     * of shape @p shape: a rotation-invariant one (its one-sphere set) or a
+     * surface mesh (its distance map).
+     */
+    bool
+    containment_engine_takes(const geometry::Shape &shape,
+                             const unsigned int     dim);
   } // namespace fbm
 } // namespace particulate
 

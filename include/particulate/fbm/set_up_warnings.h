@@ -47,6 +47,19 @@ namespace particulate {
       coupling_stability(const std::vector<double> &density_ratios,
                          const double               added_mass_coefficient,
                          const unsigned int         dim);
+
+      /**
+       * A surface-mesh shape whose distance map resolves it less than two
+       * map cells thick: its thin parts may let nodes and contacts through.
+       * @param names the shapes' names
+       * @param thicknesses twice the deepest map point of each [m]
+       *   (DistanceMap::deepest_inside())
+       * @param spacings each map's spacing [m]
+       */
+      std::string
+      thin_surface_meshes(const std::vector<std::string> &names,
+                          const std::vector<double>      &thicknesses,
+                          const std::vector<double>      &spacings);
     } // namespace set_up_warnings
   }   // namespace fbm
 } // namespace particulate

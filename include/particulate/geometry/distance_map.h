@@ -143,6 +143,12 @@ namespace particulate {
       bool
       covers(const Eigen::Vector3d &p) const;
 
+      /** The largest depth inside the solid over the grid points [m]:
+       *  about half the thickness of its thickest part, as the grid
+       *  resolves it (0 if no grid point is inside). */
+      double
+      deepest_inside() const;
+
       /** Number of grid points in each direction. */
       const std::array<int, 3> &
       n_points() const
