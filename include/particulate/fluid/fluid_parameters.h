@@ -206,7 +206,7 @@ namespace particulate {
         = MultigridCoarseSolver::automatic;
       /// the velocity V-cycle after a mesh motion
       MultigridOnMovingMesh multigrid_on_moving_mesh
-        = MultigridOnMovingMesh::rebuild;
+        = MultigridOnMovingMesh::keep;
       bool         amg_elliptic        = true;
       AmgSmoother  amg_smoother        = AmgSmoother::ilu;
       unsigned int amg_smoother_sweeps = 2;
