@@ -129,7 +129,8 @@ namespace particulate {
         "about h^2 / (8 R) off near a surface of curvature radius R; refine "
         "it for thin parts (a warning names a body thinner than two map "
         "cells). Maps are cached by mesh, spacing and margin in "
-        "$XDG_CACHE_HOME/particulate (or ~/.cache/particulate).");
+        "$XDG_CACHE_HOME/particulate/distance-maps (or "
+        "~/.cache/particulate/distance-maps).");
       prm.declare_entry("Radius",
                         "0",
                         Patterns::Double(0.),
