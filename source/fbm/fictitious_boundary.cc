@@ -24,6 +24,22 @@ namespace particulate {
           "nodes inside the bodies only ('Covered nodes = inside' in "
           "subsection 'Particles'); use 'Containment backend = cpu' for "
           "'halfway' or 'nearest'.";
+
+      /** A distance map in the layout the cuda/ engine uploads (the fields
+       *  of geometry's export; cuda/ does not depend on geometry). */
+      cuda::DistanceMapData
+      engine_map(const geometry::DistanceMap &map)
+      {
+        const geometry::DistanceMapData data = map.export_data();
+        cuda::DistanceMapData           upload;
+        upload.nx = data.nx;
+        upload.ny = data.ny;
+        upload.nz = data.nz;
+        std::copy_n(data.origin, 3, upload.origin);
+        std::copy_n(data.spacing, 3, upload.spacing);
+        upload.values = data.values;
+        return upload;
+      }
     } // namespace
 
     template <int dim>
@@ -250,15 +266,9 @@ namespace particulate {
                            [&](const auto &m) { return m.first == key; });
           if (map == engine_maps.end())
             {
-              const geometry::DistanceMapData data = mesh->map().export_data();
-              cuda::DistanceMapData           upload;
-              upload.nx = data.nx;
-              upload.ny = data.ny;
-              upload.nz = data.nz;
-              std::copy_n(data.origin, 3, upload.origin);
-              std::copy_n(data.spacing, 3, upload.spacing);
-              upload.values = data.values;
-              engine_maps.emplace_back(key, engine->add_distance_map(upload));
+              engine_maps.emplace_back(key,
+                                       engine->add_distance_map(
+                                         engine_map(mesh->map())));
               map = std::prev(engine_maps.end());
             }
           return map->second;

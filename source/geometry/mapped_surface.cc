@@ -19,7 +19,6 @@ namespace particulate {
         throw GeometryError("MappedSurface: the distance map does not cover "
                             "the surface; build it over the surface's "
                             "bounding box.");
-      vertices = surface_->surface_points();
     }
 
     double
@@ -88,7 +87,7 @@ namespace particulate {
     std::vector<Eigen::Vector3d>
     MappedSurface::surface_points() const
     {
-      return vertices;
+      return surface_->surface_points();
     }
 
     TriangleMesh

@@ -112,10 +112,6 @@ namespace particulate {
     MeshBody
     load_mesh_body(const std::string &path, const MeshBodyOptions &options)
     {
-      if (!(options.scale > 0.) || !std::isfinite(options.scale))
-        throw GeometryError("'" + path
-                            + "': the scale must be positive (it multiplies "
-                              "the file's coordinates).");
       return make_mesh_body(read_surface_mesh(path), options, "'" + path + "'");
     }
 
@@ -157,11 +153,9 @@ namespace particulate {
           + " this run may use; give a larger map spacing (the memory falls "
             "with its cube).");
 
-      body.spacing = parameters.spacing;
-      auto map     = std::make_shared<const DistanceMap>(
+      auto map = std::make_shared<const DistanceMap>(
         build_map(mesh, *surface, parameters, options, body.from_cache));
-      body.deepest_inside = map->deepest_inside();
-      body.shape          = std::make_shared<const MappedSurface>(surface, map);
+      body.shape = std::make_shared<const MappedSurface>(surface, map);
       return body;
     }
 

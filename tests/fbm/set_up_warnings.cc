@@ -78,10 +78,11 @@ main()
       options.map_spacing = spacing;
       const auto body
         = particulate::geometry::make_mesh_body(plate, options, "the plate");
+      const auto &map = body.shape->map();
       expect(set_up_warnings::thin_surface_meshes({"plate"},
-                                                  {2. * body.deepest_inside},
-                                                  {body.spacing}),
-             "a 4 mm plate, map spacing " + std::to_string(body.spacing),
+                                                  {2. * map.deepest_inside()},
+                                                  {map.spacing()}),
+             "a 4 mm plate, map spacing " + std::to_string(map.spacing()),
              spacing > 0. ? "shape 'plate' is only" : "");
     }
   std::cout << (failures == 0 ? "OK" : "FAILED") << std::endl;

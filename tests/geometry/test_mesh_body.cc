@@ -91,7 +91,7 @@ main()
 
   const MeshBody body = load_mesh_body(turned, options);
   const double   size = semi_axes.maxCoeff();
-  const double   h    = body.spacing;
+  const double   h    = body.shape->map().spacing();
   std::cout << "map spacing " << h << " m, " << body.shape->map().n_points()[0]
             << " x " << body.shape->map().n_points()[1] << " x "
             << body.shape->map().n_points()[2] << " points" << std::endl;
@@ -142,9 +142,10 @@ main()
             << " differ" << std::endl;
   CHECK(worst_distance < 0.1 * h);
   CHECK(disagreements == 0);
-  std::cout << "deepest map point " << body.deepest_inside
+  const double deepest = body.shape->map().deepest_inside();
+  std::cout << "deepest map point " << deepest
             << " m (c = " << semi_axes.minCoeff() << ")" << std::endl;
-  CHECK(std::abs(body.deepest_inside - semi_axes.minCoeff()) < h);
+  CHECK(std::abs(deepest - semi_axes.minCoeff()) < h);
 
   // the cache
   CHECK(!body.from_cache);

@@ -114,7 +114,6 @@ namespace particulate {
       std::shared_ptr<const TriangulatedSurface> surface_;
       std::shared_ptr<const DistanceMap>         map_;
       DistanceMapShape                           lookup;
-      std::vector<Eigen::Vector3d>               vertices;
     };
 
   } // namespace geometry

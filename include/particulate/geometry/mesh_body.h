@@ -47,11 +47,6 @@ namespace particulate {
        *  translation is the centroid, its rotation turns body axes into file
        *  axes. A body placed with this rotation looks as in the file. */
       Pose file_frame;
-      /** The map's spacing [m]. */
-      double spacing = 0.;
-      /** Depth of the deepest map point inside the body [m]: half the
-       *  thickness of its thickest part, as the map resolves it. */
-      double deepest_inside = 0.;
       /** Whether the map was read from the cache. */
       bool from_cache = false;
     };
