@@ -5,18 +5,25 @@
 // (host broad-phase build, copies in, kernel, copies out), points per second
 // and the fraction of the memory-bandwidth bound, from the device-to-device
 // copy bandwidth measured in the same run. For the CPU path on the same host:
-// one thread and all hardware threads. Prints a table; never asserts on time.
+// one thread and all hardware threads. A second table gives the cost of the
+// call a coupled step makes (flags only) against the number of mesh bodies
+// (1 to 1000 distance maps) on 65^3 and 129^3 nodes, with the number of flags
+// that differ between the GPU and the CPU path. Prints the tables; never
+// asserts on time.
 //
 // Usage: bench_containment [--quick] [--size N]... [--scene TEXT]
 // [--kernel-only]
-//   --quick: 33^3 and 49^3 only; --size: lattice sizes to run (repeatable);
-//   --scene: only scenes whose name contains TEXT ("map x1", "spheres", ...);
+//   --quick: 33^3 and 49^3 only (mesh-body table: 33^3); --size: lattice
+//   sizes to run (repeatable, both tables);
+//   --scene: only scenes whose name contains TEXT ("map x1", "spheres",
+//   "mesh bodies", ...);
 //   --kernel-only: only the kernel timings (for ncu), no CPU, no table.
 #include <particulate/cuda/containment_engine.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -76,6 +83,182 @@ namespace {
           }
       }
     return b;
+  }
+
+  /**
+   * The table "containment per coupled step against the number of mesh
+   * bodies": 1, 10, 100 and 1000 bodies given as distance maps of 32-64 cells
+   * per edge (ellipsoid, elephant-like, torus; the size a mesh body's map has
+   * in Particulate), of size about s = 0.04, scattered at random poses in the
+   * unit cube without heavy overlap, against a fixed lattice of mesh nodes.
+   * The call is the one the coupled step makes (fbm::FictitiousBoundary):
+   * flags only, no distances. The first m bodies of one placement of 1000
+   * make the scene of m bodies.
+   */
+  void
+  mesh_body_table(ContainmentEngine      &cpu1,
+                  ContainmentEngine      *gpu,
+                  const std::vector<int> &sizes,
+                  const bool              kernel_only)
+  {
+    const double                 s = 0.04;
+    std::vector<DistanceMapData> maps
+      = {sample_map_box(ellipsoid_sdf(0.9 * s, 0.6 * s, 0.45 * s),
+                        {1.0 * s, 0.7 * s, 0.55 * s},
+                        2.0 * s / 60),
+         sample_map_box(elephant_sdf(s),
+                        {1.05 * s, 0.53 * s, 0.6 * s},
+                        2.1 * s / 64),
+         sample_map_box(torus_sdf(0.6 * s, 0.25 * s),
+                        {0.95 * s, 0.95 * s, 0.5 * s},
+                        1.9 * s / 60)};
+    std::vector<int> handles;
+    for (const DistanceMapData &m : maps)
+      {
+        handles.push_back(cpu1.add_distance_map(m));
+        if (gpu != nullptr && gpu->add_distance_map(m) != handles.back())
+          throw std::logic_error("shape handles differ between the engines");
+      }
+    std::mt19937              rng(2024);
+    std::vector<BodyInstance> all
+      = scatter_bodies(rng, 1000, s, 1.8 * s, static_cast<int>(maps.size()));
+    if (all.size() != 1000)
+      throw std::logic_error("could not place 1000 bodies");
+    for (BodyInstance &b : all)
+      b.shape = handles[static_cast<std::size_t>(b.shape)];
+    std::printf(
+      "\nMesh bodies: maps of %dx%dx%d (ellipsoid), %dx%dx%d (elephant-like) "
+      "and %dx%dx%d (torus) samples, bodies about %.2f long, centres at "
+      "least %.3f apart\n",
+      maps[0].nx,
+      maps[0].ny,
+      maps[0].nz,
+      maps[1].nx,
+      maps[1].ny,
+      maps[1].nz,
+      maps[2].nx,
+      maps[2].ny,
+      maps[2].nz,
+      2. * s,
+      1.8 * s);
+
+    struct Row
+    {
+      int         m, n1;
+      std::size_t n, inside, flag_diffs;
+      double      cpu1_ms, kernel_ms, e2e_ms;
+    };
+    std::vector<Row> rows;
+    for (const int n1 : sizes)
+      {
+        std::vector<float> xyz = unit_cube_lattice(n1);
+        const std::size_t  n   = xyz.size() / 3;
+        std::vector<int>   f_cpu(n), f_gpu(n);
+        if (gpu != nullptr)
+          {
+            gpu->pin_host_memory(xyz.data(), xyz.size() * sizeof(float));
+            gpu->pin_host_memory(f_gpu.data(), n * sizeof(int));
+          }
+        for (const int m : {1, 10, 100, 1000})
+          {
+            Row r{};
+            r.m  = m;
+            r.n1 = n1;
+            r.n  = n;
+            if (kernel_only)
+              {
+                if (gpu != nullptr)
+                  std::printf(
+                    "mesh bodies x%d %d^3: kernel %.4f ms\n",
+                    m,
+                    n1,
+                    gpu->time_kernel(xyz.data(), n, all.data(), m, false, 3));
+                continue;
+              }
+            r.cpu1_ms = median_ms(n1 >= 97 ? 3 : 5, [&] {
+              cpu1
+                .classify(xyz.data(), n, all.data(), m, f_cpu.data(), nullptr);
+            });
+            r.inside  = std::count_if(f_cpu.begin(), f_cpu.end(), [](int f) {
+              return f >= 0;
+            });
+            if (gpu != nullptr)
+              {
+                std::fill(f_gpu.begin(),
+                          f_gpu.end(),
+                          -2); // every flag is written
+                r.e2e_ms = median_ms(20, [&] {
+                  gpu->classify(xyz.data(),
+                                n,
+                                all.data(),
+                                m,
+                                f_gpu.data(),
+                                nullptr);
+                });
+                r.kernel_ms
+                  = gpu->time_kernel(xyz.data(), n, all.data(), m, false, 20);
+                for (std::size_t p = 0; p < n; ++p)
+                  r.flag_diffs += f_gpu[p] != f_cpu[p];
+              }
+            rows.push_back(r);
+          }
+        if (gpu != nullptr)
+          {
+            gpu->unpin_host_memory(xyz.data());
+            gpu->unpin_host_memory(f_gpu.data());
+          }
+      }
+    if (kernel_only)
+      return;
+
+    std::printf(
+      "\n## Containment per coupled step against the number of mesh bodies (%s)\n\n",
+      gpu != nullptr ? gpu->device_name().c_str() : "no GPU");
+    std::printf(
+      "| bodies | nodes | inside | CPU 1 thr ms | GPU kernel ms | GPU e2e ms (pinned) "
+      "| GPU e2e ns/node | GPU e2e us/body | e2e speed-up vs 1 thr | flag diffs GPU/CPU |\n");
+    std::printf(
+      "|-------:|-------|-------:|-------------:|--------------:|--------------------:"
+      "|----------------:|----------------:|----------------------:|-------------------:|\n");
+    for (const Row &r : rows)
+      {
+        char nodes[32];
+        std::snprintf(nodes, sizeof nodes, "%d^3=%zu", r.n1, r.n);
+        if (gpu != nullptr)
+          std::printf(
+            "| %6d | %-13s | %6zu | %12.2f | %13.4f | %19.3f | %15.4f | %15.3f "
+            "| %20.1fx | %18zu |\n",
+            r.m,
+            nodes,
+            r.inside,
+            r.cpu1_ms,
+            r.kernel_ms,
+            r.e2e_ms,
+            1e6 * r.e2e_ms / double(r.n),
+            1e3 * r.e2e_ms / r.m,
+            r.cpu1_ms / r.e2e_ms,
+            r.flag_diffs);
+        else
+          std::printf(
+            "| %6d | %-13s | %6zu | %12.2f | %13s | %19s | %15s | %15s | %21s | %18s |\n",
+            r.m,
+            nodes,
+            r.inside,
+            r.cpu1_ms,
+            "-",
+            "-",
+            "-",
+            "-",
+            "-",
+            "-");
+      }
+    std::printf(
+      "\nFlags only (distance = nullptr), as fbm::FictitiousBoundary calls it each coupled "
+      "step. Kernel: best of 20 launches, nodes on the device. e2e: classify() host to "
+      "host with pinned buffers (input checks, broad-phase grid on the host, copies, "
+      "kernel), median of 20. ns/node = e2e / nodes, us/body = e2e / bodies. CPU: the "
+      "same call on the CPU path, 1 thread, median of 3-5. Flag diffs: nodes whose "
+      "first_body differs between the GPU and the CPU path (must be 0).\n");
   }
 } // namespace
 
@@ -391,6 +574,14 @@ main(int argc, char **argv)
         "resident on the device, best of 20 launches. e2e = classify() from host to host (broad-phase "
         "build, copies in, kernel, copies out), median of 20 (pinned) or 5 (pageable). CPU: same "
         "classify() on the CPU path, median of 3-5. Speed-ups use the pinned e2e time.\n");
+
+      if (std::string("mesh bodies").find(only_scene) != std::string::npos)
+        mesh_body_table(cpu1,
+                        gpu.get(),
+                        !only_sizes.empty() ? only_sizes :
+                        quick               ? std::vector<int>{33} :
+                                              std::vector<int>{65, 129},
+                        kernel_only);
     }
   catch (const std::exception &e)
     {

@@ -40,7 +40,10 @@ namespace particulate {
 #define PARTICULATE_CUDA_CHECK(call) \
   check_cuda((call), #call, __FILE__, __LINE__)
 
-        constexpr int threads_per_block = 256;
+        /** 128 rather than 256: within a few per cent either way on an H200,
+         * faster where points walk the broad-phase grid (100 and 1000
+         * bodies), whose work per point is uneven. */
+        constexpr int threads_per_block = 128;
         constexpr int n_streams         = 3;
 
         /** Device allocation that only grows; freed in the destructor. */
@@ -104,9 +107,13 @@ namespace particulate {
         /**
          * One thread per point (thesis §5.4.3); every output element of the
          * range is written. Measured on an H200 and kept simple: staging the
-         * points through shared memory with 16-byte loads, copying body
-         * records with 16-byte loads, or giving each thread 2 or 4 points
-         * were all slower (a barrier, registers, occupancy).
+         * points through shared memory or shuffles with 16-byte loads,
+         * copying body records with 16-byte loads, giving each thread 2 or 4
+         * points, bricked or 8-corner map layouts, two or four sphere
+         * entries per loop step, and persistent grids were all slower or no
+         * faster. What bounds it is the L2 traffic of the
+         * map gathers and the latency of dependent loads (cell, body, map),
+         * not DRAM; see doc/performance.md, "CUDA containment".
          */
         __global__ void
         __launch_bounds__(threads_per_block)
@@ -121,17 +128,20 @@ namespace particulate {
             return;
           int   f;
           float d;
+          // Points and results stream through once: load and store them
+          // evict-first (.cs), so that the L1 and L2 keep the map samples,
+          // sphere entries and body records that neighbouring points reuse.
           classify_point(scene,
-                         __ldg(xyz + 3 * p),
-                         __ldg(xyz + 3 * p + 1),
-                         __ldg(xyz + 3 * p + 2),
+                         __ldcs(xyz + 3 * p),
+                         __ldcs(xyz + 3 * p + 1),
+                         __ldcs(xyz + 3 * p + 2),
                          distance != nullptr,
                          f,
                          d);
           if (first_body != nullptr)
-            first_body[p] = f;
+            __stcs(first_body + p, f);
           if (distance != nullptr)
-            distance[p] = d;
+            __stcs(distance + p, d);
         }
 
         void
