@@ -230,10 +230,12 @@ namespace particulate {
           // the box of the body, enlarged by the marking's reach and
           // slightly against rounding
           const double                reach = fraction * largest_half_spacing;
+          const geometry::BoundingBox local_box
+            = body.shape().bounding_box().enlarged(
+              reach + 1e-9 * body.bounding_radius() + 1e-14);
           const geometry::BoundingBox box
             = geometry::Pose(body.orientation, body.position)
-                .to_world(body.shape().bounding_box())
-                .enlarged(reach + 1e-9 * body.bounding_radius() + 1e-14);
+                .to_world(local_box);
           // A node on the surface belongs to the body, whichever side
           // rounding puts it: a mesh adapted to the body carries vertices
           // (and, in 3D, the midpoints of edges along a cylinder's axis)
@@ -243,8 +245,14 @@ namespace particulate {
           grid->for_each_in_box(box, [&](const std::size_t i) {
             const double tolerance
               = std::max(fraction, on_surface) * half_spacing[i];
-            if (node_body[i] < 0
-                && body.signed_distance(positions[i]) <= tolerance)
+            if (node_body[i] >= 0)
+              return;
+            // the world box of a turned body holds nodes outside its own
+            // box, which are outside it (and beyond a distance map's grid,
+            // where its distance is an exact, slower, query)
+            const Eigen::Vector3d x = body.to_body(positions[i]);
+            if (local_box.contains(x)
+                && body.shape().signed_distance(x) <= tolerance)
               node_body[i] = b;
           });
         }

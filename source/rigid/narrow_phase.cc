@@ -290,13 +290,20 @@ namespace particulate {
                      const double     margin,
                      Points          &out)
       {
-        const Eigen::Matrix3d RQ = Q.rotation();
+        const Eigen::Matrix3d       RQ  = Q.rotation();
+        const geometry::BoundingBox box = Q.shape().bounding_box();
         for (const Eigen::Vector3d &pb : P.shape().surface_points())
           {
             const Eigen::Vector3d p  = P.to_world(pb);
             const Eigen::Vector3d pq = Q.to_body(p);
-            Eigen::Vector3d       gq;
-            const double          gap = Q.shape().signed_distance(pq, &gq);
+            // Q lies in its box: a point farther than the margin from the
+            // box is farther from Q (and its distance query, beyond a
+            // distance map's grid an exact one, is not needed)
+            if ((box.lower - pq).cwiseMax(pq - box.upper).cwiseMax(0.).norm()
+                > margin)
+              continue;
+            Eigen::Vector3d gq;
+            const double    gap = Q.shape().signed_distance(pq, &gq);
             if (gap > margin)
               continue;
             const Eigen::Vector3d g  = RQ * gq;     // out of Q

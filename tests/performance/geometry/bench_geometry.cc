@@ -1,13 +1,17 @@
 // Geometry benchmark (issue 4): distance-map lookup against CGAL's direct
 // queries, map build time against mesh size, and hash-grid point
 // containment on 33^3 / 65^3 / 129^3 vertex lattices against 1 and 100
-// bodies. Prints tables; asserts nothing about time.
-// Usage: bench_geometry [quick|lookups]   ("quick": smaller sizes, for smoke
-// runs; "lookups": only the lookup table)
+// bodies; and (issue 44) the containment of 1 to 1 000 mesh bodies
+// (MappedSurface) on 65^3 / 129^3 lattices, per call, node and body.
+// Prints tables; asserts nothing about time.
+// Usage: bench_geometry [quick] [lookups|mesh-bodies]   ("quick": smaller
+// sizes, for smoke runs; "lookups": only the lookup table; "mesh-bodies":
+// only the mesh-body containment table)
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/distance_map.h>
 #include <particulate/geometry/distance_map_shape.h>
 #include <particulate/geometry/ellipsoid.h>
+#include <particulate/geometry/mesh_body.h>
 #include <particulate/geometry/mesh_generators.h>
 #include <particulate/geometry/mesh_io.h>
 #include <particulate/geometry/point_containment.h>
@@ -18,10 +22,13 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <random>
 #include <string>
+
+#include "../geodesic_ellipsoid.h"
 
 using namespace particulate::geometry;
 using Eigen::Vector3d;
@@ -271,14 +278,222 @@ namespace {
       double(stats.n_tests) / (double(pts.size()) * bodies.size()),
       brute ? (same ? "yes" : "NO") : "-");
   }
+
+  // Median of 5 samples of the CPU time of this thread for one call of
+  // @p f [s], each sample repeating f often enough to last 2 ms: robust
+  // against other processes on the shared cores, and resolving calls of a
+  // few microseconds.
+  template <typename F>
+  double
+  median_cpu_seconds(F &&f)
+  {
+    auto cpu = [] {
+      timespec t;
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+      return t.tv_sec + 1.e-9 * t.tv_nsec;
+    };
+    f(); // warm-up
+    unsigned int calls = 1;
+    for (;;)
+      {
+        const double t0 = cpu();
+        for (unsigned int i = 0; i < calls; ++i)
+          f();
+        if (cpu() - t0 >= 2.e-3)
+          break;
+        calls *= 2;
+      }
+    std::vector<double> t(5);
+    for (double &x : t)
+      {
+        const double t0 = cpu();
+        for (unsigned int i = 0; i < calls; ++i)
+          f();
+        x = (cpu() - t0) / calls;
+      }
+    std::nth_element(t.begin(), t.begin() + 2, t.end());
+    return t[2];
+  }
+
+  // One step's containment of mesh bodies against a lattice of nodes, by
+  // body count (issue 44). The bodies: one MappedSurface (make_mesh_body:
+  // the exact polyhedron and its distance map at the automatic spacing) of a
+  // geodesic ellipsoid mesh with semi-axes (35, 24.5, 17.5) mm, 2 000
+  // triangles, at 1 000 random poses (random orientations, centres at least
+  // 2 a = 70 mm apart, so that their circumscribed spheres do not overlap)
+  // in the unit cube; the first 1, 10, 100, 1 000 of them. Two ways of
+  // marking the nodes:
+  // - classify_points (point_containment.h): the hash grid's candidates per
+  //   body box, answered in groups by MappedSurface::contains_points;
+  // - "FBM loop": what fbm::FictitiousBoundary::classify does on the CPU
+  //   (the application's cpu containment backend, 'inside' marking): the
+  //   same hash-grid candidates, those in the body's own box asked for
+  //   their signed distance, a node inside when its distance is <= 1e-10
+  //   of its half spacing.
+  // The hash grid over the nodes is built once per mesh (column "grid").
+  void
+  mesh_body_containment(const bool quick)
+  {
+    const Eigen::Vector3d semi_axes(0.035, 0.0245, 0.0175);
+    const MeshBody        body
+      = make_mesh_body(particulate::benchmarks::geodesic_ellipsoid(semi_axes,
+                                                                   10),
+                       MeshBodyOptions(),
+                       "the geodesic ellipsoid");
+    // called through Shape, as the FBM calls RigidBody::shape()
+    const Shape       &shape = *body.shape;
+    const DistanceMap &map   = body.shape->map();
+
+    std::vector<Pose>                      poses;
+    std::mt19937                           rng(44);
+    std::uniform_real_distribution<double> u(0., 1.), q(-1., 1.);
+    const double                           a     = semi_axes.maxCoeff();
+    unsigned long                          tries = 0;
+    while (poses.size() < 1000)
+      {
+        ++tries;
+        const Vector3d x = Vector3d::Constant(a)
+                           + (1. - 2. * a) * Vector3d(u(rng), u(rng), u(rng));
+        bool free = true;
+        for (const Pose &p : poses)
+          free = free && (p.translation() - x).norm() >= 2. * a;
+        if (free)
+          poses.emplace_back(
+            Eigen::Quaterniond(q(rng), q(rng), q(rng), q(rng)).normalized(),
+            x);
+      }
+
+    std::printf(
+      "\n## Mesh-body containment per step against body count (MappedSurface, %zu triangles, map %d x %d x %d)\n\n",
+      body.shape->surface_mesh().n_triangles(),
+      map.n_points()[0],
+      map.n_points()[1],
+      map.n_points()[2]);
+    std::printf(
+      "| nodes  | bodies | inside  | tests/body | beyond map | grid [ms] | classify_points [ms] | ns/node | us/body | ns/test | FBM loop [ms] | ns/node | us/body | ns/test | equal |\n");
+    std::printf(
+      "|--------|--------|---------|------------|------------|-----------|----------------------|---------|---------|---------|---------------|---------|---------|---------|-------|\n");
+    for (const int n : {33, 65, 129})
+      {
+        if ((quick && n > 65) || (!quick && n < 65))
+          continue;
+        std::vector<Vector3d> pts;
+        pts.reserve(std::size_t(n) * n * n);
+        for (int k = 0; k < n; ++k)
+          for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+              pts.emplace_back(i / double(n - 1),
+                               j / double(n - 1),
+                               k / double(n - 1));
+        const double nodes = double(pts.size());
+        // the FBM's tolerance: 1e-10 of half the node spacing
+        const double        tolerance = 1e-10 * 0.5 / (n - 1);
+        const auto          t0        = Clock::now();
+        const PointHashGrid grid(pts);
+        const double        t_grid = seconds_since(t0);
+        for (const std::size_t count : {1, 10, 100, 1000})
+          {
+            std::vector<PlacedShape> bodies;
+            for (std::size_t b = 0; b < count; ++b)
+              bodies.push_back({&shape, poses[b]});
+            // counters from an untimed call (they cost a pass over all
+            // points)
+            ContainmentStatistics stats;
+            classify_points(grid, bodies, nullptr, &stats);
+            std::vector<int> marked;
+            const double     t_classify = median_cpu_seconds(
+              [&] { marked = classify_points(grid, bodies); });
+            std::vector<int> node_body(pts.size(), -1);
+            std::size_t      tests  = 0;
+            const double     t_loop = median_cpu_seconds([&] {
+              std::fill(node_body.begin(), node_body.end(), -1);
+              tests = 0;
+              for (std::size_t b = 0; b < count; ++b)
+                {
+                  const Pose       &pose  = bodies[b].pose;
+                  const BoundingBox local = shape.bounding_box().enlarged(
+                    1e-9 * shape.bounding_radius() + 1e-14);
+                  grid.for_each_in_box(pose.to_world(local),
+                                       [&](const std::size_t i) {
+                                         ++tests;
+                                         if (node_body[i] >= 0)
+                                           return;
+                                         const Vector3d x
+                                           = pose.to_body(pts[i]);
+                                         if (local.contains(x)
+                                             && shape.signed_distance(x)
+                                                  <= tolerance)
+                                           node_body[i] = int(b);
+                                       });
+                }
+            });
+            std::size_t inside = 0, beyond = 0;
+            for (const int b : marked)
+              inside += b >= 0;
+            // candidates beyond the map's grid box: there
+            // MappedSurface::signed_distance asks the exact surface
+            for (const PlacedShape &b : bodies)
+              grid.for_each_in_box(world_bounding_box(b),
+                                   [&](const std::size_t i) {
+                                     beyond
+                                       += !map.covers(b.pose.to_body(pts[i]));
+                                   });
+            const double tests_c = double(stats.n_tests);
+            std::printf(
+              "| %4d^3 | %6zu | %7zu | %10.0f | %9.0f%% | %9.1f | %20.3f | %7.2f | %7.2f | %7.1f | %13.3f | %7.2f | %7.2f | %7.1f | %5s |\n",
+              n,
+              count,
+              inside,
+              tests_c / count,
+              100. * beyond / tests_c,
+              t_grid * 1e3,
+              t_classify * 1e3,
+              t_classify / nodes * 1e9,
+              t_classify / count * 1e6,
+              t_classify / tests_c * 1e9,
+              t_loop * 1e3,
+              t_loop / nodes * 1e9,
+              t_loop / count * 1e6,
+              t_loop / double(tests) * 1e9,
+              marked == node_body ? "yes" : "NO");
+            std::fflush(stdout);
+          }
+      }
+    std::printf(
+      "\nbodies: the first of 1 000 ellipsoids at random non-overlapping "
+      "poses in the unit cube (%lu draws to place them); nodes: the lattice "
+      "of the unit cube; inside: nodes marked; tests/body: nodes in a body's "
+      "box; beyond map: share of those outside the map's grid box (the body "
+      "box with 4 map cells of margin, in the body frame), where "
+      "MappedSurface::signed_distance asks the exact surface (CGAL closest "
+      "point and inside test) while contains_points answers outside; grid: building the hash grid over the nodes (once per mesh, wall "
+      "time); classify_points: geometry::classify_points (batched "
+      "MappedSurface::contains_points); FBM loop: the application's cpu "
+      "backend (fbm::FictitiousBoundary::classify, 'inside' marking: one "
+      "signed_distance per candidate node inside the body's own box); ns/node: over all nodes; "
+      "us/body, ns/test: per body, per candidate node; equal: both mark the "
+      "same nodes. Thread CPU time, median of 5 samples of >= 2 ms.\n",
+      tries);
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  const std::string mode  = argc > 1 ? argv[1] : "";
-  const bool        quick = mode == "quick";
-  const char       *env   = std::getenv("PARTICULATE_CGAL_DATA_DIR");
+  bool quick = false, lookups_only = false, mesh_bodies_only = false;
+  for (int a = 1; a < argc; ++a)
+    {
+      const std::string flag = argv[a];
+      quick |= flag == "quick";
+      lookups_only |= flag == "lookups";
+      mesh_bodies_only |= flag == "mesh-bodies";
+    }
+  if (mesh_bodies_only)
+    {
+      mesh_body_containment(quick);
+      return 0;
+    }
+  const char       *env = std::getenv("PARTICULATE_CGAL_DATA_DIR");
   const std::string dir = std::string(env ? env : "cgal-data") + "/data/meshes";
   std::vector<std::pair<std::string, TriangleMesh>> meshes;
   for (const char *name : {"elephant.off", "bunny00.off"})
@@ -297,7 +512,7 @@ main(int argc, char **argv)
   lookups("icosphere L5", mesh_generators::icosphere(1., 5), n_queries);
   for (const auto &[name, mesh] : meshes)
     lookups(name, mesh, n_queries);
-  if (mode == "lookups")
+  if (lookups_only)
     return 0;
 
   std::printf(
@@ -397,5 +612,6 @@ main(int argc, char **argv)
     "DistanceMapShape of the elephant (size 0.4 alone, 0.1 for 100), "
     "\"1 by 1\": one contains() call per point instead of the batched "
     "Shape::contains_points.\n");
+  mesh_body_containment(quick);
   return 0;
 }
