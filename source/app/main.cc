@@ -4,6 +4,7 @@
 #include <particulate/core/input_file.h>
 #include <particulate/fbm/case_file.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
+#include <particulate/fbm/rigid_bodies_simulation.h>
 #include <particulate/fluid/flow_simulation.h>
 
 #include <deal.II/base/mpi.h>
@@ -52,19 +53,29 @@ namespace {
            const std::string                    &filename,
            MPI_Comm                              comm)
   {
-    if (parameters.flow.simulation.type
-        == core::SimulationParameters::Type::particulate_flow)
+    switch (parameters.flow.simulation.type)
       {
-        fbm::ParticulateFlowSimulation<dim> simulation(parameters,
+        case core::SimulationParameters::Type::particulate_flow:
+          {
+            fbm::ParticulateFlowSimulation<dim> simulation(parameters,
+                                                           filename,
+                                                           comm);
+            simulation.run();
+            return;
+          }
+        case core::SimulationParameters::Type::rigid_bodies:
+          {
+            fbm::RigidBodiesSimulation<dim> simulation(parameters,
                                                        filename,
                                                        comm);
-        simulation.run();
+            simulation.run();
+            return;
+          }
+        case core::SimulationParameters::Type::fluid:
+          break;
       }
-    else
-      {
-        fluid::FlowSimulation<dim> simulation(parameters.flow, filename, comm);
-        simulation.run();
-      }
+    fluid::FlowSimulation<dim> simulation(parameters.flow, filename, comm);
+    simulation.run();
   }
 } // namespace
 

@@ -482,6 +482,21 @@ namespace particulate {
     template std::vector<unsigned int>
     global_boundary_ids<3>(
       const parallel::fullydistributed::Triangulation<3> &);
+    template <int dim>
+    double
+    smallest_cell_edge(const Triangulation<dim> &tria, MPI_Comm comm)
+    {
+      double h = std::numeric_limits<double>::max();
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          h = std::min(h, cell->minimum_vertex_distance());
+      return Utilities::MPI::min(h, comm);
+    }
+
+    template double
+    smallest_cell_edge<2>(const Triangulation<2> &, MPI_Comm);
+    template double
+    smallest_cell_edge<3>(const Triangulation<3> &, MPI_Comm);
     template std::pair<Point<2>, Point<2>>
     global_bounding_box<2>(const Triangulation<2> &, MPI_Comm);
     template std::pair<Point<3>, Point<3>>

@@ -16,12 +16,17 @@ namespace particulate {
       prm.enter_subsection("Simulation");
       prm.declare_entry("Type",
                         "fluid",
-                        Patterns::Selection("fluid|particulate flow"),
+                        Patterns::Selection(
+                          "fluid|particulate flow|rigid bodies"),
                         "What to simulate. 'fluid': incompressible "
                         "Navier-Stokes flow around body-fitted obstacles. "
                         "'particulate flow': rigid particles (subsection "
                         "'Particles') in the fluid by the fictitious boundary "
-                        "method.");
+                        "method. 'rigid bodies': the same particles under "
+                        "gravity and contacts alone, without a fluid (no "
+                        "buoyancy), in the box of the mesh with its walls and "
+                        "with the fixed 'Time step'; the run writes the "
+                        "particles' output of a particulate flow run.");
       prm.declare_entry("Dimension",
                         std::to_string(defaults.dimension),
                         Patterns::Integer(2, 3),
@@ -33,8 +38,10 @@ namespace particulate {
     SimulationParameters::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Simulation");
-      type = prm.get("Type") == "particulate flow" ? Type::particulate_flow :
-                                                     Type::fluid;
+      const std::string name = prm.get("Type");
+      type      = name == "particulate flow" ? Type::particulate_flow :
+                  name == "rigid bodies"     ? Type::rigid_bodies :
+                                               Type::fluid;
       dimension = prm.get_integer("Dimension");
       prm.leave_subsection();
     }

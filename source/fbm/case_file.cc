@@ -62,7 +62,11 @@ namespace particulate {
                                 MPI_Comm                         comm)
       {
         const fluid::FlowCaseParameters &flow = parameters.flow;
-        check_expressions<dim>(flow);
+        const bool                       with_fluid
+          = flow.simulation.type
+            != core::SimulationParameters::Type::rigid_bodies;
+        if (with_fluid)
+          check_expressions<dim>(flow);
         // the size first: the whole refined mesh is built on every rank
         core::check_mesh_size(flow.mesh,
                               dim,
@@ -72,8 +76,9 @@ namespace particulate {
         dealii::parallel::fullydistributed::Triangulation<dim> tria(comm);
         core::create_mesh(coarse, tria);
         core::check_mesh_size(flow.mesh, dim, tria.n_global_active_cells());
-        flow.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
-                                             filename);
+        if (with_fluid)
+          flow.fluid.boundary_conditions.check(core::global_boundary_ids(tria),
+                                               filename);
         const auto [lower, upper] = core::global_bounding_box(tria, comm);
         Eigen::Vector3d low       = Eigen::Vector3d::Zero();
         Eigen::Vector3d up        = Eigen::Vector3d::Zero();

@@ -236,6 +236,17 @@ namespace particulate {
       if (!parameters.write_vtu)
         return;
       flow_output.write(flow, step, time);
+      write_bodies(world);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowOutput<dim>::write_bodies(const rigid::World &world)
+    {
+      if (!parameters.write_vtu)
+        return;
       if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
         {
           body_output.write(world);

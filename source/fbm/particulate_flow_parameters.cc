@@ -75,14 +75,21 @@ namespace particulate {
             "puts vertices onto the surfaces. Set 'Method = laplace-alpha' "
             "or 'Moving bodies = re-adapt'.");
       // never ignore input silently
-      if (flow.simulation.type == core::SimulationParameters::Type::fluid
+      using Type = core::SimulationParameters::Type;
+      if (flow.simulation.type != Type::particulate_flow
           && checkpoint.enabled())
         throw std::runtime_error(
           filename
           + ": subsection 'Checkpoint' asks for checkpoints, which only "
             "'particulate flow' runs write so far. Set both intervals to 0.");
-      if (flow.simulation.type
-            == core::SimulationParameters::Type::particulate_flow
+      if (flow.simulation.type == Type::rigid_bodies
+          && particles.n_particles() == 0)
+        throw std::runtime_error(
+          filename
+          + ": a 'rigid bodies' run needs at least one particle: add a "
+            "subsection 'Particle 0' (or a 'Particle file', 'Lattice' or "
+            "'Random fill') to subsection 'Particles'.");
+      if (flow.simulation.type != Type::fluid
           && sets_any_entry(outline, "Forces"))
         throw std::runtime_error(
           outline.where({"Forces"})

@@ -10,6 +10,7 @@
 #include <particulate/fbm/hydrodynamic_forces.h>
 #include <particulate/fbm/particle_set_checks.h>
 #include <particulate/fbm/particle_shape.h>
+#include <particulate/fbm/particle_world.h>
 #include <particulate/fbm/particulate_flow_output.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
 #include <particulate/fbm/prescribed_motion.h>
@@ -18,8 +19,6 @@
 #include <particulate/fluid/flow_diagnostics.h>
 #include <particulate/fluid/navier_stokes.h>
 #include <particulate/fluid/run_frame.h>
-#include <particulate/geometry/half_space.h>
-#include <particulate/geometry/mapped_surface.h>
 #include <particulate/rigid/world.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -35,7 +34,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -46,18 +44,6 @@ namespace particulate {
     using namespace dealii;
 
     namespace {
-      /** Shortest cell edge of the whole mesh (all ranks). */
-      template <int dim>
-      double
-      smallest_cell_edge(const Triangulation<dim> &tria, MPI_Comm comm)
-      {
-        double h = std::numeric_limits<double>::max();
-        for (const auto &cell : tria.active_cell_iterators())
-          if (cell->is_locally_owned())
-            h = std::min(h, cell->minimum_vertex_distance());
-        return Utilities::MPI::min(h, comm);
-      }
-
       /** The marking that 'Covered nodes' chooses. */
       template <int dim>
       typename FictitiousBoundary<dim>::Marking
@@ -101,8 +87,7 @@ namespace particulate {
       /// per particle: its motion where it is prescribed, else null
       std::vector<std::unique_ptr<PrescribedMotion<dim>>> prescribed;
       /// per particle: where it starts (a prescribed one at d(0), phi(0))
-      std::vector<Eigen::Vector3d>                        initial_positions;
-      std::vector<Eigen::Quaterniond>                     initial_orientations;
+      std::vector<BodyStart>                              starts;
       std::unique_ptr<BodyAdaptedMesh<dim>>               adapted_mesh;
       deformation::DeformationReport                      initial_report;
       std::unique_ptr<fluid::NavierStokes<dim>>           flow;
@@ -235,8 +220,10 @@ namespace particulate {
                                                           p.velocity,
                                                           p.orientation,
                                                           p.angular_velocity};
-          r.initial_positions.push_back(start.position);
-          r.initial_orientations.push_back(start.orientation);
+          r.starts.push_back({start.position,
+                              start.orientation,
+                              start.velocity,
+                              start.angular_velocity});
         }
       r.any_prescribed = particle_p.any(ParticleMotion::prescribed);
       adapt_mesh_to_bodies();
@@ -344,7 +331,7 @@ namespace particulate {
                                                  r.tria);
       std::vector<geometry::Pose> poses;
       for (unsigned int i = 0; i < shapes.size(); ++i)
-        poses.emplace_back(r.initial_orientations[i], r.initial_positions[i]);
+        poses.emplace_back(r.starts[i].orientation, r.starts[i].position);
       r.initial_report   = r.adapted_mesh->adapt(poses);
       const auto &report = r.initial_report;
       r.pcout << "Mesh deformation: " << r.adapted_mesh->mesh().method_name()
@@ -359,106 +346,33 @@ namespace particulate {
     void
     ParticulateFlowSimulation<dim>::add_bodies()
     {
-      Run         &r          = *run_;
-      const auto  &particle_p = parameters.particles;
-      const double rho_f      = parameters.flow.fluid.properties.density;
-      // Added-mass correction (RigidBodyUpdate): the engine integrates a
-      // free particle with mass m + m_a, its density rho_p + C rho_f.
-      rigid::WorldParameters world_p;
-      world_p.gravity        = Eigen::Vector3d::Zero(); // applied as (dM) g
-      world_p.contact_solver = particle_p.contact_solver;
-      world_p.substeps       = particle_p.substeps;
-      world_p.contact_offset = particle_p.contact_distance ?
-                                 *particle_p.contact_distance :
-                                 smallest_cell_edge(r.tria, communicator);
-      r.world                = std::make_unique<rigid::World>(world_p);
-      rigid::Material material;
-      material.restitution     = particle_p.restitution;
-      material.static_friction = material.dynamic_friction
-        = particle_p.friction;
-      // one material per density the engine sees
-      std::map<double, unsigned int> material_of_density;
-      const auto material_for = [&](const double engine_density) {
-        const auto it = material_of_density.find(engine_density);
-        if (it != material_of_density.end())
-          return it->second;
-        rigid::Material m     = material;
-        m.name                = "particle";
-        m.density             = engine_density;
-        const unsigned int id = r.world->add_material(m);
-        material_of_density.emplace(engine_density, id);
-        return id;
-      };
-
-      for (unsigned int i = 0; i < particle_p.n_particles(); ++i)
-        {
-          const ParticleDescription &p    = particle_p.bodies[i];
-          const bool                 free = p.motion == ParticleMotion::free;
-          const unsigned int         particle_material = material_for(
-            p.density + particle_p.added_mass_coefficient * rho_f);
-          r.ids.push_back(r.world->add_body(p.shape,
-                                            particle_material,
-                                            r.initial_positions[i],
-                                            r.initial_orientations[i],
-                                            !free));
-          rigid::RigidBody &b = r.world->body(r.ids.back());
-          // locked inside the engine, so that contacts cannot spend their
-          // impulse on a rotation the coupling would discard
-          b.lock_rotation(particle_p.locked_rotation);
-          if (free)
-            {
-              b.linear_velocity  = p.velocity;
-              b.angular_velocity = p.angular_velocity;
-            }
-          if (r.prescribed[i])
-            {
-              const PrescribedState s = r.prescribed[i]->state(0.);
-              b.linear_velocity       = s.velocity;
-              b.angular_velocity      = s.angular_velocity;
-            }
-        }
-      // walls are immovable: their density does not enter
-      rigid::Material wall_material = material;
-      wall_material.name            = "wall";
-      const unsigned int wall_material_id
-        = r.world->add_material(wall_material);
+      Run               &r          = *run_;
+      const auto        &particle_p = parameters.particles;
+      ParticleWorldFrame frame;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          Eigen::Vector3d n = Eigen::Vector3d::Zero();
-          n[d]              = 1.;
-          // half-space {n.p <= offset}; n points into the fluid
-          if (particle_p.walls[2 * d])
-            r.world->add_body(
-              std::make_shared<geometry::HalfSpace>(n, r.box_lower[d]),
-              wall_material_id,
-              Eigen::Vector3d::Zero(),
-              Eigen::Quaterniond::Identity(),
-              true);
-          if (particle_p.walls[2 * d + 1])
-            r.world->add_body(
-              std::make_shared<geometry::HalfSpace>(-n, -r.box_upper[d]),
-              wall_material_id,
-              Eigen::Vector3d::Zero(),
-              Eigen::Quaterniond::Identity(),
-              true);
+          frame.domain.lower[d] = r.box_lower[d];
+          frame.domain.upper[d] = r.box_upper[d];
         }
-      DomainBox domain;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          domain.lower[d] = r.box_lower[d];
-          domain.upper[d] = r.box_upper[d];
-        }
-      domain.walls         = particle_p.walls;
-      domain.mirror_planes = particle_p.symmetry_planes;
-      domain.dim           = dim;
-      r.guard              = std::make_unique<BodyStateGuard>(domain,
+      frame.domain.walls         = particle_p.walls;
+      frame.domain.mirror_planes = particle_p.symmetry_planes;
+      frame.domain.dim           = dim;
+      frame.contact_offset       = particle_p.contact_distance ?
+                                     *particle_p.contact_distance :
+                                     core::smallest_cell_edge(r.tria, communicator);
+      // the weight enters as (rho_p - rho_f) V g through RigidBodyUpdate;
+      // the engine integrates a free particle with the added mass m + m_a
+      frame.gravity       = Eigen::Vector3d::Zero();
+      frame.added_density = particle_p.added_mass_coefficient
+                            * parameters.flow.fluid.properties.density;
+      ParticleWorld built = build_particle_world(particle_p, r.starts, frame);
+      r.world             = std::move(built.world);
+      r.ids               = std::move(built.ids);
+      r.guard             = std::make_unique<BodyStateGuard>(frame.domain,
                                                  r.ids,
-                                                 world_p.contact_offset);
-      std::vector<rigid::BodyId> free_ids;
-      for (unsigned int i = 0; i < r.ids.size(); ++i)
-        if (particle_p.bodies[i].motion == ParticleMotion::free)
-          free_ids.push_back(r.ids[i]);
-      r.energy = std::make_unique<EnergyBalance>(free_ids);
+                                                 frame.contact_offset);
+      r.energy
+        = std::make_unique<EnergyBalance>(free_body_ids(particle_p, r.ids));
     }
 
 
@@ -514,28 +428,13 @@ namespace particulate {
           if (particles.bodies[i].motion == ParticleMotion::free)
             density_ratios.push_back(particles.bodies[i].density / rho_f);
         }
-      std::vector<std::string> mesh_names;
-      std::vector<double>      mesh_thicknesses, map_spacings;
-      for (const ParticleDescription &p : particles.bodies)
-        if (const auto *mesh
-            = dynamic_cast<const geometry::MappedSurface *>(p.shape.get());
-            mesh
-            && std::find(mesh_names.begin(), mesh_names.end(), p.shape_name)
-                 == mesh_names.end())
-          {
-            mesh_names.push_back(p.shape_name);
-            mesh_thicknesses.push_back(2. * mesh->map().deepest_inside());
-            map_spacings.push_back(mesh->map().spacing());
-          }
       for (const std::string &warning :
            {set_up_warnings::resolution(sizes, cell_sizes_at_particles()),
             set_up_warnings::coupling_stability(
               density_ratios,
               particles.added_mass_coefficient,
               dim),
-            set_up_warnings::thin_surface_meshes(mesh_names,
-                                                 mesh_thicknesses,
-                                                 map_spacings)})
+            set_up_warnings::thin_surface_meshes(particles.bodies)})
         if (!warning.empty())
           r.pcout << warning << std::endl;
     }

@@ -1,3 +1,4 @@
+#include <particulate/fbm/particle_world.h>
 #include <particulate/fbm/rigid_body_update.h>
 
 #include <stdexcept>
@@ -87,28 +88,6 @@ namespace particulate {
 
 
     void
-    RigidBodyUpdate::restore_locked_axes(
-      rigid::RigidBody         &b,
-      const Eigen::Vector3d    &old_position,
-      const Eigen::Quaterniond &old_orientation) const
-    {
-      for (unsigned int d = 0; d < 3; ++d)
-        {
-          if (locked_translation[d])
-            {
-              b.linear_velocity[d] = 0.;
-              b.position[d]        = old_position[d];
-            }
-          if (locked_rotation[d])
-            b.angular_velocity[d] = 0.;
-        }
-      if (locked_rotation[0] && locked_rotation[1] && locked_rotation[2])
-        b.orientation = old_orientation;
-    }
-
-
-
-    void
     RigidBodyUpdate::clip_against_contacts(const rigid::World &world,
                                            const rigid::BodyId id,
                                            Eigen::Vector3d    &acceleration)
@@ -154,7 +133,9 @@ namespace particulate {
         if (free[i])
           restore_locked_axes(world.body(ids[i]),
                               old_position[i],
-                              old_orientation[i]);
+                              old_orientation[i],
+                              locked_translation,
+                              locked_rotation);
       if (balance)
         balance->end_step(world);
       for (unsigned int i = 0; i < n; ++i)

@@ -1,5 +1,7 @@
 #include <particulate/fbm/set_up_warnings.h>
+#include <particulate/geometry/mapped_surface.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace particulate {
@@ -104,6 +106,27 @@ namespace particulate {
                        "'Particles / Shape "
                     << names[i] << "'.";
         return message.str();
+      }
+
+
+
+      std::string
+      thin_surface_meshes(const std::vector<ParticleDescription> &particles)
+      {
+        std::vector<std::string> names;
+        std::vector<double>      thicknesses, spacings;
+        for (const ParticleDescription &p : particles)
+          if (const auto *mesh
+              = dynamic_cast<const geometry::MappedSurface *>(p.shape.get());
+              mesh
+              && std::find(names.begin(), names.end(), p.shape_name)
+                   == names.end())
+            {
+              names.push_back(p.shape_name);
+              thicknesses.push_back(2. * mesh->map().deepest_inside());
+              spacings.push_back(mesh->map().spacing());
+            }
+        return thin_surface_meshes(names, thicknesses, spacings);
       }
     } // namespace set_up_warnings
   }   // namespace fbm

@@ -98,6 +98,12 @@ namespace particulate {
     template <int dim>
     std::pair<dealii::Point<dim>, dealii::Point<dim>>
     global_bounding_box(const dealii::Triangulation<dim> &tria, MPI_Comm comm);
+
+    /** The shortest cell edge of the whole mesh (its locally owned cells'
+     *  smallest vertex distance, over all ranks of @p comm). */
+    template <int dim>
+    double
+    smallest_cell_edge(const dealii::Triangulation<dim> &tria, MPI_Comm comm);
   } // namespace core
 } // namespace particulate
 

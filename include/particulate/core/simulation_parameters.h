@@ -13,8 +13,9 @@ namespace particulate {
       /** What the run simulates. */
       enum class Type
       {
-        fluid,           ///< incompressible flow with body-fitted obstacles
-        particulate_flow ///< particles in the flow (fictitious boundaries)
+        fluid,            ///< incompressible flow with body-fitted obstacles
+        particulate_flow, ///< particles in the flow (fictitious boundaries)
+        rigid_bodies      ///< the particles alone, without a fluid
       };
       Type         type      = Type::fluid;
       unsigned int dimension = 2;

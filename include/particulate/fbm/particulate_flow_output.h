@@ -40,7 +40,9 @@ namespace particulate {
      * energies, iteration counts, time step, deepest contact overlap) and, on
      * an adapted mesh, `mesh.dat` (its quality); and the ParaView series
      * `flow.pvd`, `particles.pvd` (a point per body with its state, for glyphs)
-     * and `particle_surfaces.pvd` (the bodies' surfaces, any shape).
+     * and the bodies' surfaces, any shape: each body's own series
+     * `particle_surfaces/body_<i>.pvd` and all of them in
+     * `particle_surfaces.pvd` (rigid::BodySurfaceWriter).
      *
      * A restart continues every series: the ParaView files listed in the
      * checkpoint (save(), load()), and the `.dat` files without the rows
@@ -100,6 +102,11 @@ namespace particulate {
                    const rigid::World             &world,
                    const unsigned int              step,
                    const double                    time);
+
+      /** The bodies alone, at the engine's time, if the case writes
+       *  fields (a run without a fluid). */
+      void
+      write_bodies(const rigid::World &world);
 
       /** Ends every `.dat` series with a comment line saying that the run
        *  stopped after @p time and why (@p reason). */

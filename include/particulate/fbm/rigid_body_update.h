@@ -89,13 +89,6 @@ namespace particulate {
                   const rigid::BodyId      id,
                   const BodyCouplingState &state) const;
 
-      /** Undo motion along the locked axes, from the pose before the
-       *  step. */
-      void
-      restore_locked_axes(rigid::RigidBody         &body,
-                          const Eigen::Vector3d    &old_position,
-                          const Eigen::Quaterniond &old_orientation) const;
-
       /** Drop the acceleration's components into touching surfaces. */
       static void
       clip_against_contacts(const rigid::World &world,

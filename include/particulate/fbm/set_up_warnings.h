@@ -1,6 +1,8 @@
 #ifndef particulate_fbm_set_up_warnings_h
 #define particulate_fbm_set_up_warnings_h
 
+#include <particulate/fbm/particle_description.h>
+
 #include <string>
 #include <vector>
 
@@ -60,6 +62,11 @@ namespace particulate {
       thin_surface_meshes(const std::vector<std::string> &names,
                           const std::vector<double>      &thicknesses,
                           const std::vector<double>      &spacings);
+
+      /** The same for the surface-mesh shapes of @p particles (each shape
+       *  named once). */
+      std::string
+      thin_surface_meshes(const std::vector<ParticleDescription> &particles);
     } // namespace set_up_warnings
   }   // namespace fbm
 } // namespace particulate
