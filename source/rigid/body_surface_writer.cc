@@ -1,29 +1,22 @@
 #include <particulate/rigid/body_surface_writer.h>
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace particulate {
   namespace rigid {
     namespace {
-      /** One body's surface in the world frame and its velocity there. */
-      struct PlacedSurface
-      {
-        BodyId                        id;
-        bool                          fixed;
-        std::vector<Eigen::Vector3d>  points;
-        std::vector<Eigen::Vector3d>  velocities;
-        const geometry::TriangleMesh *mesh;
-      };
-
-      PlacedSurface
+      BodySurfaceWriter::PlacedSurface
       place(const RigidBody              &body,
             const BodyId                  id,
             const geometry::TriangleMesh &mesh)
       {
-        PlacedSurface s{id, body.is_fixed(), {}, {}, &mesh};
+        BodySurfaceWriter::PlacedSurface s{id, body.is_fixed(), {}, {}, &mesh};
         s.points.reserve(mesh.n_vertices());
         s.velocities.reserve(mesh.n_vertices());
         for (const Eigen::Vector3d &v : mesh.vertices)
@@ -38,10 +31,11 @@ namespace particulate {
       }
 
       void
-      write_points(std::ostream                     &out,
-                   const char                       *name,
-                   const std::vector<PlacedSurface> &surfaces,
-                   const bool                        velocities)
+      write_points(
+        std::ostream                                        &out,
+        const char                                          *name,
+        const std::vector<BodySurfaceWriter::PlacedSurface> &surfaces,
+        const bool                                           velocities)
       {
         out << "        <DataArray type=\"Float64\""
             << (name ? std::string(" Name=\"") + name + "\"" : std::string())
@@ -53,7 +47,8 @@ namespace particulate {
       }
 
       void
-      write_polys(std::ostream &out, const std::vector<PlacedSurface> &surfaces)
+      write_polys(std::ostream                                        &out,
+                  const std::vector<BodySurfaceWriter::PlacedSurface> &surfaces)
       {
         out << "      <Polys>\n"
             << "        <DataArray type=\"Int64\" Name=\"connectivity\" "
@@ -77,8 +72,9 @@ namespace particulate {
       }
 
       void
-      write_cell_data(std::ostream                     &out,
-                      const std::vector<PlacedSurface> &surfaces)
+      write_cell_data(
+        std::ostream                                        &out,
+        const std::vector<BodySurfaceWriter::PlacedSurface> &surfaces)
       {
         out << "      <CellData Scalars=\"id\">\n";
         for (const bool fixed : {false, true})
@@ -99,7 +95,8 @@ namespace particulate {
 
 
     BodySurfaceWriter::BodySurfaceWriter(std::string prefix)
-      : series(std::move(prefix))
+      : prefix(prefix)
+      , series(std::move(prefix))
     {}
 
 
@@ -120,35 +117,58 @@ namespace particulate {
 
 
 
-    std::string
-    BodySurfaceWriter::write(const World &world)
+    PvdSeries &
+    BodySurfaceWriter::body_series(const BodyId id)
     {
-      std::vector<PlacedSurface> surfaces;
-      std::size_t                n_points = 0, n_triangles = 0;
-      for (BodyId i = 0; i < world.n_bodies(); ++i)
-        if (world.body(i).shape().is_bounded())
-          {
-            surfaces.push_back(
-              place(world.body(i), i, display_mesh(world.body(i))));
-            n_points += surfaces.back().points.size();
-            n_triangles += surfaces.back().mesh->n_triangles();
-          }
+      auto it = bodies.find(id);
+      if (it != bodies.end())
+        return it->second;
+      const std::string folder = prefix;
+      std::error_code   error;
+      std::filesystem::create_directories(folder, error);
+      if (error)
+        throw std::runtime_error("rigid::BodySurfaceWriter: cannot create '"
+                                 + folder + "': " + error.message());
+      PvdSeries body(folder + "/body_" + std::to_string(id));
+      // a resumed run: this body's pieces of the snapshots written so far
+      std::vector<std::pair<double, std::string>> written;
+      for (std::size_t k = 0; k < series.written().size(); ++k)
+        written.emplace_back(series.written()[k].first, piece_name(id, k));
+      body.resume(std::move(written));
+      return bodies.emplace(id, std::move(body)).first->second;
+    }
 
-      const std::string name = series.next_file("vtp");
-      std::ofstream     out(name);
+
+
+    std::string
+    BodySurfaceWriter::piece_name(const BodyId id, const std::size_t snapshot)
+    {
+      char number[16];
+      std::snprintf(number, sizeof number, "%05zu", snapshot);
+      return "body_" + std::to_string(id) + "_" + number + ".vtp";
+    }
+
+
+
+    void
+    BodySurfaceWriter::write_piece(const std::string   &name,
+                                   const PlacedSurface &surface)
+    {
+      std::ofstream out(name);
       if (!out)
         throw std::runtime_error("rigid::BodySurfaceWriter: cannot open '"
                                  + name
                                  + "' for writing; does the folder exist?");
+      const std::vector<PlacedSurface> surfaces{surface};
       out << std::setprecision(10)
           << "<?xml version=\"1.0\"?>\n"
              "<VTKFile type=\"PolyData\" version=\"0.1\" "
              "byte_order=\"LittleEndian\">\n"
              "  <PolyData>\n"
-          << "    <Piece NumberOfPoints=\"" << n_points
+          << "    <Piece NumberOfPoints=\"" << surface.points.size()
           << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
              "NumberOfPolys=\""
-          << n_triangles << "\">\n      <Points>\n";
+          << surface.mesh->n_triangles() << "\">\n      <Points>\n";
       write_points(out, nullptr, surfaces, false);
       out << "      </Points>\n";
       write_polys(out, surfaces);
@@ -161,6 +181,42 @@ namespace particulate {
       if (!out)
         throw std::runtime_error("rigid::BodySurfaceWriter: writing '" + name
                                  + "' failed; is the disk full?");
+    }
+
+
+
+    std::string
+    BodySurfaceWriter::write(const World &world)
+    {
+      const std::size_t snapshot = series.written().size();
+      // the pieces lie in the folder named like the series, next to it
+      const std::string  folder = std::filesystem::path(prefix).filename();
+      std::ostringstream blocks;
+      unsigned int       block = 0;
+      for (BodyId i = 0; i < world.n_bodies(); ++i)
+        if (world.body(i).shape().is_bounded())
+          {
+            PvdSeries        &own   = body_series(i);
+            const std::string piece = piece_name(i, snapshot);
+            write_piece(prefix + "/" + piece,
+                        place(world.body(i), i, display_mesh(world.body(i))));
+            own.add(world.time(), prefix + "/" + piece);
+            blocks << "    <DataSet index=\"" << block++ << "\" name=\"body "
+                   << i << "\" file=\"" << folder << "/" << piece << "\"/>\n";
+          }
+
+      const std::string name = series.next_file("vtm");
+      std::ofstream     out(name);
+      out << "<?xml version=\"1.0\"?>\n"
+             "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+             "byte_order=\"LittleEndian\">\n"
+             "  <vtkMultiBlockDataSet>\n"
+          << blocks.str() << "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
+      out.close();
+      if (!out)
+        throw std::runtime_error("rigid::BodySurfaceWriter: writing '" + name
+                                 + "' failed; does the folder exist, is the "
+                                   "disk full?");
       series.add(world.time(), name);
       return name;
     }

@@ -1,11 +1,13 @@
 // The bodies' surfaces in ParaView (BodySurfaceWriter): a rotated, spinning
 // box, a sphere and a capsule above a floor (a half-space, which has no
-// surface to draw). The written file must hold each bounded body's display
-// triangulation, in body order: as many points and triangles as the meshes,
-// every point on its body's surface at the body's pose (|signed distance| <
-// 1e-8 m, the file's ten digits), the point velocity the rigid motion's
-// v + omega x (x - X) (to 1e-8 m/s), the cell ids the body ids; and the
-// series file one data set per call.
+// surface to draw). Each bounded body's piece must hold its display
+// triangulation: as many points and triangles as the mesh, every point on
+// the body's surface at its pose (|signed distance| < 1e-8 m, the file's ten
+// digits), the point velocity the rigid motion's v + omega x (x - X) (to
+// 1e-8 m/s), the cell ids the body's id; each body's series lists its
+// pieces, the multiblock file of a call names every body's piece, its series
+// one file per call, and a writer resumed from the written series goes on
+// with all of them.
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/capsule.h>
 #include <particulate/geometry/half_space.h>
@@ -73,27 +75,50 @@ main()
   rigid::BodySurfaceWriter writer("body_surface_files/surfaces");
   writer.write(world);
   const std::string name = writer.write(world);
-  CHECK(name == "body_surface_files/surfaces_00001.vtp", name);
+  CHECK(name == "body_surface_files/surfaces_00001.vtm", name);
 
-  std::ifstream     in(name);
-  const std::string text((std::istreambuf_iterator<char>(in)),
-                         std::istreambuf_iterator<char>());
-  // arrays: points, connectivity, offsets, velocity, id, fixed
-  const std::vector<double> points   = data_array(text, 0),
-                            offsets  = data_array(text, 2),
-                            velocity = data_array(text, 3),
-                            ids      = data_array(text, 4);
-  std::size_t first_point = 0, first_cell = 0;
+  const auto read = [](const std::string &file) {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)),
+                       std::istreambuf_iterator<char>());
+  };
+  const std::string blocks   = read(name);
+  std::size_t       n_points = 0, n_triangles = 0;
   for (rigid::BodyId b = 1; b < world.n_bodies(); ++b)
     {
-      const rigid::RigidBody      &body = world.body(b);
-      const geometry::TriangleMesh mesh = body.shape().surface_mesh();
+      // the multiblock file names the body's own piece, which its own
+      // series lists
+      const std::string piece = "body_" + std::to_string(b) + "_00001.vtp";
+      CHECK(blocks.find("name=\"body " + std::to_string(b)
+                        + "\" file=\"surfaces/" + piece + "\"")
+              != std::string::npos,
+            blocks);
+      const std::string own = read("body_surface_files/surfaces/body_"
+                                   + std::to_string(b) + ".pvd");
+      CHECK(own.find("body_" + std::to_string(b) + "_00000.vtp")
+                != std::string::npos
+              && own.find(piece) != std::string::npos,
+            own);
+      const std::string text = read("body_surface_files/surfaces/" + piece);
+      // arrays: points, connectivity, offsets, velocity, id, fixed
+      const std::vector<double> points   = data_array(text, 0),
+                                offsets  = data_array(text, 2),
+                                velocity = data_array(text, 3),
+                                ids      = data_array(text, 4);
+      const rigid::RigidBody      &body  = world.body(b);
+      const geometry::TriangleMesh mesh  = body.shape().surface_mesh();
+      CHECK(points.size() == 3 * mesh.n_vertices(),
+            points.size() / 3 << " points of body " << b << ", expected "
+                              << mesh.n_vertices());
+      CHECK(offsets.size() == mesh.n_triangles()
+              && ids.size() == mesh.n_triangles(),
+            offsets.size() << " triangles of body " << b << ", expected "
+                           << mesh.n_triangles());
       for (std::size_t k = 0; k < mesh.n_vertices(); ++k)
         {
-          const std::size_t p = 3 * (first_point + k);
-          CHECK(p + 2 < points.size(), "too few points for body " << b);
-          const Vector3d x(points[p], points[p + 1], points[p + 2]);
-          const Vector3d v(velocity[p], velocity[p + 1], velocity[p + 2]);
+          const std::size_t p = 3 * k;
+          const Vector3d    x(points[p], points[p + 1], points[p + 2]);
+          const Vector3d    v(velocity[p], velocity[p + 1], velocity[p + 2]);
           CHECK(std::abs(body.signed_distance(x)) < 1e-8,
                 "body " << b << " point " << k << " off the surface by "
                         << body.signed_distance(x));
@@ -105,22 +130,28 @@ main()
                         << v.transpose());
         }
       for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
-        CHECK(ids[first_cell + t] == b, "triangle of body " << b);
-      first_point += mesh.n_vertices();
-      first_cell += mesh.n_triangles();
+        CHECK(ids[t] == b, "triangle of body " << b);
+      n_points += mesh.n_vertices();
+      n_triangles += mesh.n_triangles();
     }
-  CHECK(points.size() == 3 * first_point,
-        points.size() / 3 << " points, expected " << first_point);
-  CHECK(offsets.size() == first_cell && ids.size() == first_cell,
-        offsets.size() << " triangles, expected " << first_cell);
+  CHECK(blocks.find("body 0") == std::string::npos,
+        "the floor, unbounded, has no surface");
 
-  std::ifstream     pvd("body_surface_files/surfaces.pvd");
-  const std::string series((std::istreambuf_iterator<char>(pvd)),
-                           std::istreambuf_iterator<char>());
-  CHECK(series.find("surfaces_00000.vtp") != std::string::npos
-          && series.find("surfaces_00001.vtp") != std::string::npos,
+  const std::string series = read("body_surface_files/surfaces.pvd");
+  CHECK(series.find("surfaces_00000.vtm") != std::string::npos
+          && series.find("surfaces_00001.vtm") != std::string::npos,
         series);
-  std::cout << first_point << " points, " << first_cell
-            << " triangles of 3 bodies: OK\n";
+
+  // a restarted run continues every series from the checkpointed one
+  rigid::BodySurfaceWriter resumed("body_surface_files/surfaces");
+  resumed.resume(writer.written());
+  CHECK(resumed.write(world) == "body_surface_files/surfaces_00002.vtm",
+        "the resumed series goes on counting");
+  const std::string own = read("body_surface_files/surfaces/body_2.pvd");
+  CHECK(own.find("body_2_00000.vtp") != std::string::npos
+          && own.find("body_2_00002.vtp") != std::string::npos,
+        own);
+  std::cout << n_points << " points, " << n_triangles
+            << " triangles of 3 bodies, each its own series: OK\n";
   return 0;
 }

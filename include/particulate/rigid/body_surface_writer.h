@@ -5,6 +5,7 @@
 #include <particulate/rigid/pvd_series.h>
 #include <particulate/rigid/world.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -14,32 +15,48 @@
 namespace particulate {
   namespace rigid {
     /**
-     * ParaView output of the bodies as their surfaces: one VTK PolyData file
-     * (`<prefix>_NNNNN.vtp`, plain ASCII XML) per call with the display
-     * triangulation of every bounded body (geometry::Shape::surface_mesh(),
-     * built once per shape) placed at the body's pose, the point data
-     * velocity (the rigid motion's velocity at the point, v + omega x r, m/s)
-     * and the cell data id and fixed (0/1); plus the series file
-     * `<prefix>.pvd`. Opens in ParaView as it is, any shape.
+     * ParaView output of the bodies as their surfaces, each body its own
+     * series: per call, the display triangulation of every bounded body
+     * (geometry::Shape::surface_mesh(), built once per shape) placed at its
+     * pose, with the point data velocity (the rigid motion's velocity at the
+     * point, v + omega x r, m/s) and the cell data id and fixed (0/1), as
+     * `<prefix>/body_<id>_NNNNN.vtp` (plain ASCII XML) in the series
+     * `<prefix>/body_<id>.pvd`; and a multiblock file `<prefix>_NNNNN.vtm`
+     * naming every body's piece as a block "body <id>", in the series
+     * `<prefix>.pvd`: all bodies at once, each selectable. Opens in ParaView
+     * as it is, any shape.
      */
     class BodySurfaceWriter
     {
     public:
+      /** One body's surface in the world frame and its velocity there. */
+      struct PlacedSurface
+      {
+        BodyId                        id;
+        bool                          fixed;
+        std::vector<Eigen::Vector3d>  points;
+        std::vector<Eigen::Vector3d>  velocities;
+        const geometry::TriangleMesh *mesh;
+      };
+
       /** @param prefix Path prefix, e.g. "output/particle_surfaces". */
       explicit BodySurfaceWriter(std::string prefix);
 
-      /** Writes the current state; returns the file name. */
+      /** Writes the current state; returns the multiblock file's name. */
       std::string
       write(const World &world);
 
-      /** The series written so far (time, file), for a checkpoint. */
+      /** The series of all bodies written so far (time, multiblock file),
+       *  for a checkpoint. */
       const std::vector<std::pair<double, std::string>> &
       written() const
       {
         return series.written();
       }
 
-      /** Continues the series of a restarted run (see PvdSeries::resume()). */
+      /** Continues the series of a restarted run (see PvdSeries::resume()):
+       *  the bodies' own series are continued from it as they are written
+       *  next. */
       void
       resume(std::vector<std::pair<double, std::string>> written)
       {
@@ -52,7 +69,21 @@ namespace particulate {
       const geometry::TriangleMesh &
       display_mesh(const RigidBody &body);
 
-      PvdSeries series;
+      /** The series of body @p id, made (with its folder) on first use. */
+      PvdSeries &
+      body_series(const BodyId id);
+
+      /** `body_<id>_NNNNN.vtp` of snapshot @p snapshot. */
+      static std::string
+      piece_name(const BodyId id, const std::size_t snapshot);
+
+      /** One body's surface as the PolyData file @p name. */
+      static void
+      write_piece(const std::string &name, const PlacedSurface &surface);
+
+      const std::string           prefix;
+      PvdSeries                   series;
+      std::map<BodyId, PvdSeries> bodies;
       std::unordered_map<const geometry::Shape *,
                          std::pair<std::shared_ptr<const geometry::Shape>,
                                    geometry::TriangleMesh>>
