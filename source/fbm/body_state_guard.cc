@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace particulate {
   namespace fbm {
@@ -64,6 +66,17 @@ namespace particulate {
           axis[d]                     = sign;
           const Eigen::Vector3d local = body.orientation.conjugate() * axis;
           return pose.to_world(shape.support(local))[d];
+        }
+      // a surface mesh reaches farthest at one of its vertices, where a
+      // turned bounding box may reach well beyond it (another non-convex
+      // shape: its surface points, as the narrow phase sees it)
+      const std::vector<Eigen::Vector3d> points = shape.surface_points();
+      if (!points.empty())
+        {
+          double farthest = -std::numeric_limits<double>::infinity();
+          for (const Eigen::Vector3d &p : points)
+            farthest = std::max(farthest, sign * pose.to_world(p)[d]);
+          return sign * farthest;
         }
       const geometry::BoundingBox box = pose.to_world(shape.bounding_box());
       return positive ? box.upper[d] : box.lower[d];

@@ -10,6 +10,11 @@
 //   lowest point is 0.005 m above the floor passes: its reach is its
 //   support point, where its tilted bounding box would reach 0.027 m past
 //   the floor;
+// - a sphere given as a surface mesh (an icosphere of radius 0.1 m, 1 280
+//   triangles), turned by 45 degrees, whose lowest vertex is 0.005 m above
+//   the floor passes: its reach is that vertex, where its turned bounding
+//   box would reach 0.066 m past the floor (a mesh body falling into a
+//   basket was stopped so);
 // - a centre beyond a face that is not a wall stops the run ("left the
 //   domain"); on a mirror plane it does not;
 // - a fixed body is not checked;
@@ -19,8 +24,12 @@
 
 #include <particulate/fbm/body_state_guard.h>
 #include <particulate/geometry/ellipsoid.h>
+#include <particulate/geometry/mapped_surface.h>
+#include <particulate/geometry/mesh_body.h>
+#include <particulate/geometry/mesh_generators.h>
 #include <particulate/geometry/sphere.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -173,6 +182,24 @@ main()
     check(std::abs(fbm::body_reach(s.body(), 2, false) - 0.005) < 1e-12,
           "the spheroid's lowest point");
     expect(guard, s.world, "tilted spheroid above the floor", "");
+  }
+  {
+    const geometry::MeshBody mesh_sphere
+      = geometry::make_mesh_body(geometry::mesh_generators::icosphere(0.1, 3),
+                                 geometry::MeshBodyOptions(),
+                                 "icosphere");
+    Scene s(mesh_sphere.shape);
+    s.body().orientation = Eigen::Quaterniond(
+      Eigen::AngleAxisd(M_PI / 4., Eigen::Vector3d(1., 1., 0.).normalized()));
+    double lowest = 0.;
+    for (const Eigen::Vector3d &v : mesh_sphere.shape->surface_points())
+      lowest = std::min(lowest, (s.body().orientation * v)[2]);
+    s.body().position[2]      = 0.005 - lowest;
+    fbm::BodyStateGuard guard = s.guard();
+    guard.start_step(s.world);
+    check(std::abs(fbm::body_reach(s.body(), 2, false) - 0.005) < 1e-12,
+          "the mesh sphere's lowest vertex");
+    expect(guard, s.world, "turned mesh sphere above the floor", "");
   }
   {
     Scene               s(sphere, true);

@@ -116,8 +116,10 @@ namespace particulate {
     body_size(const rigid::RigidBody &body, const unsigned int dim);
 
     /** The coordinate of the body's furthest point along the world axis
-     *  @p d, towards + (@p positive) or - (exact for convex shapes, the
-     *  placed bounding box for the others). */
+     *  @p d, towards + (@p positive) or - (exact for convex shapes and
+     *  surface meshes, whose farthest point is a vertex; the farthest of the
+     *  surface points for other non-convex shapes, the placed bounding box
+     *  for those without). */
     double
     body_reach(const rigid::RigidBody &body,
                const unsigned int      d,
