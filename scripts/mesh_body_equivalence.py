@@ -30,7 +30,7 @@ import sys
 
 import numpy as np
 
-from particulate_output import read_series
+from particulate_output import read_series, read_table, write_table
 from ten_cate_ellipsoid import long_axis_tilt
 
 
@@ -51,18 +51,6 @@ def table_of(runs, names):
         columns += [-body["w"][:n], long_axis_tilt(body)[:n]]
         header += ["speed_" + name, "tilt_" + name]
     return header, np.column_stack(columns)
-
-
-def write_series(path, header, table):
-    with open(path, "w") as out:
-        out.write("# " + " ".join(header) + "\n")
-        np.savetxt(out, table, fmt="%.6g")
-
-
-def read_table(path):
-    with open(path) as f:
-        header = f.readline().lstrip("#").split()
-    return header, np.loadtxt(path, ndmin=2)
 
 
 def draw(path, header, table):
@@ -141,7 +129,7 @@ def main():
                                           for h in args.map_spacing])
     header, table = table_of([analytic] + meshes, names)
     if args.series:
-        write_series(args.series, header, table)
+        write_table(args.series, header, table)
     if args.figure:
         draw(args.figure, header, table)
     for f in failed:

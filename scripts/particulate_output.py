@@ -29,3 +29,18 @@ def read_parameters(folder):
                 name, _, value = words[4:].partition("=")
                 values["/".join(sections + [name.strip()])] = value.strip()
     return values
+
+
+def write_table(path, header, table, every=1):
+    """A small series for the docs: a '# name ...' line, then every
+    `every`-th row of the 2D array `table`."""
+    with open(path, "w") as out:
+        out.write("# " + " ".join(header) + "\n")
+        np.savetxt(out, table[::every], fmt="%.6g")
+
+
+def read_table(path):
+    """What write_table wrote: the column names and the rows."""
+    with open(path) as f:
+        header = f.readline().lstrip("#").split()
+    return header, np.loadtxt(path, ndmin=2)

@@ -10,8 +10,13 @@
 //        [seed]
 //   CASE_DIR          every *.prm below it is mutated (prm/)
 //   PARTICLE_SET_DIR  a case with a particle file, which is mutated too
-// A case that crashes or hangs is left as current.prm (and its particle
-// file) in the folder printed at the start.
+// The mutations of a case are written next to it as _fuzz_<pid>.prm, so
+// that the files it names by relative paths (surface meshes, CGAL's sample
+// meshes in the build folder) are found as from the original; a case that
+// crashes or hangs is left there. A case with more than two surface-mesh
+// shapes gets a quarter of the mutations: reading and checking its meshes
+// takes seconds per mutation. The particle file's mutations are written to
+// the temporary folder printed at the start.
 #include <particulate/fbm/case_file.h>
 
 #include <deal.II/base/mpi.h>
@@ -243,6 +248,16 @@ namespace {
     std::_Exit(2);
   }
 
+  /** How many of the lines of @p lines give a shape the type mesh. */
+  unsigned int
+  mesh_shapes(const std::vector<std::string> &lines)
+  {
+    static const std::regex mesh_type(R"(^\s*set\s+Type\s*=\s*mesh\s*$)");
+    return std::count_if(lines.begin(), lines.end(), [](const std::string &l) {
+      return std::regex_match(l, mesh_type);
+    });
+  }
+
   /** Read and check the case at @p path as --validate does. */
   void
   validate(const fs::path    &path,
@@ -323,15 +338,18 @@ main(int argc, char **argv)
     = fs::temp_directory_path()
       / ("particulate_case_fuzz_" + std::to_string(::getpid()));
   fs::create_directories(tmp);
-  current_case = tmp / "current.prm";
-  std::cout << "fuzz: cases are written to " << current_case << std::endl;
+  std::cout << "fuzz: mutated cases are written next to each case as "
+               "_fuzz_"
+            << ::getpid() << ".prm, particle files to " << tmp << std::endl;
 
   std::vector<fs::path> cases;
-  // not the temporary copies that a running validation test writes next to
-  // a case (tests/validation/run_case_and_check.sh); they come and go
+  // not the temporary copies that a running validation test or fuzz writes
+  // next to a case (tests/validation/run_case_and_check.sh, this test); they
+  // come and go
   for (const auto &entry : fs::recursive_directory_iterator(case_dir))
     if (entry.path().extension() == ".prm"
-        && entry.path().filename().string().rfind("_validation_", 0) != 0)
+        && entry.path().filename().string().rfind("_validation_", 0) != 0
+        && entry.path().filename().string().rfind("_fuzz_", 0) != 0)
       cases.push_back(entry.path());
   std::sort(cases.begin(), cases.end());
   check(!cases.empty(), "no .prm files below " + case_dir.string());
@@ -339,13 +357,8 @@ main(int argc, char **argv)
   Counts counts;
   for (const fs::path &original : cases)
     {
-      // the files a case names by relative paths (surface meshes) beside
-      // it, as next to the original
-      for (const auto &beside : fs::directory_iterator(original.parent_path()))
-        if (beside.is_regular_file() && beside.path().extension() != ".prm")
-          fs::copy_file(beside.path(),
-                        tmp / beside.path().filename(),
-                        fs::copy_options::overwrite_existing);
+      current_case = original.parent_path()
+                     / ("_fuzz_" + std::to_string(::getpid()) + ".prm");
       // the shipped file itself must be accepted
       fs::copy_file(original,
                     current_case,
@@ -354,9 +367,10 @@ main(int argc, char **argv)
       validate(current_case, shipped, original.string() + " (as shipped)");
       check(shipped.accepted == 1, original.string() + " is refused");
 
-      const auto lines  = lines_of(slurp(original));
-      const auto values = values_of(lines);
-      for (int c = 0; c < per_file; ++c)
+      const auto lines     = lines_of(slurp(original));
+      const auto values    = values_of(lines);
+      const int  mutations = mesh_shapes(lines) > 2 ? per_file / 4 : per_file;
+      for (int c = 0; c < mutations; ++c)
         {
           auto mutated = lines;
           for (unsigned int n = 1 + rng() % 3; n > 0; --n)
@@ -366,9 +380,12 @@ main(int argc, char **argv)
                    counts,
                    original.filename().string() + "#" + std::to_string(c));
         }
+      if (failures == 0)
+        fs::remove(current_case);
     }
 
   // The particle file: its case and file copied, the file mutated.
+  current_case                 = tmp / "current.prm";
   const fs::path particle_case = particle_dir / "mixed_set.prm";
   const fs::path particle_file = particle_dir / "mixed_set_particles.csv";
   fs::copy_file(particle_case,
