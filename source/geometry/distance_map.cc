@@ -10,6 +10,8 @@
 #include <sstream>
 #include <thread>
 
+#include <unistd.h>
+
 namespace particulate {
   namespace geometry {
 
@@ -194,10 +196,11 @@ namespace particulate {
       DistanceMap map = build(TriangulatedSurface(mesh), prm);
       map.key         = key;
       std::filesystem::create_directories(cache_dir, ec);
-      // Write to a private temporary name, then rename: several processes
-      // (MPI ranks) building the same map never see a half-written file.
+      // Write to a private temporary name (process, thread, object), then
+      // rename: several processes (MPI ranks) building the same map never
+      // see a half-written file.
       const std::string tmp
-        = path + ".tmp."
+        = path + ".tmp." + std::to_string(::getpid()) + "."
           + std::to_string(
             std::hash<std::thread::id>()(std::this_thread::get_id()))
           + "." + std::to_string(reinterpret_cast<std::uintptr_t>(&map));
