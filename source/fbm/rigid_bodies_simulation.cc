@@ -83,12 +83,22 @@ namespace particulate {
           r.output.note_stop(r.t, e.what());
           throw;
         }
+      return summarise(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0)
+          .count());
+    }
+
+
+
+    template <int dim>
+    RigidBodiesSummary
+    RigidBodiesSimulation<dim>::summarise(const double wall_seconds)
+    {
+      Run                &r = *run_;
       RigidBodiesSummary &s = r.summary;
       s.n_steps             = r.step;
       s.end_time            = r.t;
-      s.wall_seconds        = std::chrono::duration<double>(
-                         std::chrono::steady_clock::now() - wall0)
-                         .count();
+      s.wall_seconds        = wall_seconds;
       for (const rigid::BodyId id : r.engine.ids)
         {
           const rigid::RigidBody &b = r.engine.world->body(id);
@@ -217,18 +227,7 @@ namespace particulate {
       Run          &r     = *run_;
       rigid::World &world = *r.engine.world;
       const auto    start = std::chrono::steady_clock::now();
-      for (unsigned int i = 0; i < r.engine.ids.size(); ++i)
-        if (r.prescribed[i])
-          {
-            // an immovable body in the engine: where and how fast it moves
-            // at the end of the step
-            rigid::RigidBody     &b = world.body(r.engine.ids[i]);
-            const PrescribedState s = r.prescribed[i]->state(r.t + k);
-            b.position              = s.position;
-            b.linear_velocity       = s.velocity;
-            b.orientation           = s.orientation;
-            b.angular_velocity      = s.angular_velocity;
-          }
+      move_prescribed_bodies(r.t + k);
       r.guard->start_step(world);
       std::vector<std::pair<Eigen::Vector3d, Eigen::Quaterniond>> before;
       for (const rigid::BodyId id : r.engine.ids)
@@ -251,6 +250,27 @@ namespace particulate {
           .count());
       r.summary.max_penetration
         = std::max(r.summary.max_penetration, world.max_penetration());
+    }
+
+
+
+    template <int dim>
+    void
+    RigidBodiesSimulation<dim>::move_prescribed_bodies(const double t_new)
+    {
+      Run &r = *run_;
+      for (unsigned int i = 0; i < r.engine.ids.size(); ++i)
+        if (r.prescribed[i])
+          {
+            // an immovable body in the engine: where and how fast it moves
+            // at the end of the step
+            rigid::RigidBody     &b = r.engine.world->body(r.engine.ids[i]);
+            const PrescribedState s = r.prescribed[i]->state(t_new);
+            b.position              = s.position;
+            b.linear_velocity       = s.velocity;
+            b.orientation           = s.orientation;
+            b.angular_velocity      = s.angular_velocity;
+          }
     }
 
 

@@ -66,12 +66,20 @@ namespace particulate {
       set_up();
       void
       say_what_is_not_used() const;
+      /** One step of the engine by @p k, checked (BodyStateGuard). */
       void
       advance(const double k);
+      /** Prescribed bodies to their pose and velocity at @p t_new. */
+      void
+      move_prescribed_bodies(const double t_new);
       void
       record(const double k);
       void
       write_fields();
+      /** The summary of the run, which took @p wall_seconds, and its
+       *  closing line. */
+      RigidBodiesSummary
+      summarise(const double wall_seconds);
 
       const ParticulateFlowParameters parameters;
       const std::string               parameter_file;
