@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -52,34 +51,44 @@ namespace particulate {
 
 
 
+    geometry::BoundingBox
+    placed_extent(const rigid::RigidBody &body)
+    {
+      const geometry::Pose   pose(body.orientation, body.position);
+      const geometry::Shape &shape = body.shape();
+      geometry::BoundingBox  extent;
+      if (shape.is_convex())
+        {
+          for (unsigned int d = 0; d < 3; ++d)
+            for (const double sign : {-1., 1.})
+              {
+                Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+                axis[d]              = sign;
+                extent.extend(pose.to_world(
+                  shape.support(body.orientation.conjugate() * axis)));
+              }
+          return extent;
+        }
+      // a surface mesh reaches farthest at its vertices, where a turned
+      // bounding box may reach well beyond it (another non-convex shape:
+      // its surface points, as the narrow phase sees it)
+      const std::vector<Eigen::Vector3d> points = shape.surface_points();
+      if (points.empty())
+        return pose.to_world(shape.bounding_box());
+      for (const Eigen::Vector3d &p : points)
+        extent.extend(pose.to_world(p));
+      return extent;
+    }
+
+
+
     double
     body_reach(const rigid::RigidBody &body,
                const unsigned int      d,
                const bool              positive)
     {
-      const double           sign = positive ? 1. : -1.;
-      const geometry::Pose   pose(body.orientation, body.position);
-      const geometry::Shape &shape = body.shape();
-      if (shape.is_convex())
-        {
-          Eigen::Vector3d axis        = Eigen::Vector3d::Zero();
-          axis[d]                     = sign;
-          const Eigen::Vector3d local = body.orientation.conjugate() * axis;
-          return pose.to_world(shape.support(local))[d];
-        }
-      // a surface mesh reaches farthest at one of its vertices, where a
-      // turned bounding box may reach well beyond it (another non-convex
-      // shape: its surface points, as the narrow phase sees it)
-      const std::vector<Eigen::Vector3d> points = shape.surface_points();
-      if (!points.empty())
-        {
-          double farthest = -std::numeric_limits<double>::infinity();
-          for (const Eigen::Vector3d &p : points)
-            farthest = std::max(farthest, sign * pose.to_world(p)[d]);
-          return sign * farthest;
-        }
-      const geometry::BoundingBox box = pose.to_world(shape.bounding_box());
-      return positive ? box.upper[d] : box.lower[d];
+      const geometry::BoundingBox extent = placed_extent(body);
+      return positive ? extent.upper[d] : extent.lower[d];
     }
 
 
@@ -192,6 +201,7 @@ namespace particulate {
     {
       const double tolerance
         = std::max(contact_distance, 0.01 * body_size(body, domain.dim));
+      const geometry::BoundingBox extent = placed_extent(body);
       for_each_face(
         domain.dim,
         [&](const unsigned int d,
@@ -199,9 +209,9 @@ namespace particulate {
             const unsigned int face) {
           if (!domain.walls[face])
             return;
-          const double wall   = positive ? domain.upper[d] : domain.lower[d];
-          const double beyond = positive ? body_reach(body, d, true) - wall :
-                                           wall - body_reach(body, d, false);
+          const double wall = positive ? domain.upper[d] : domain.lower[d];
+          const double beyond
+            = positive ? extent.upper[d] - wall : wall - extent.lower[d];
           if (beyond <= tolerance)
             return;
           std::ostringstream message;

@@ -1,6 +1,7 @@
 #ifndef particulate_fbm_body_state_guard_h
 #define particulate_fbm_body_state_guard_h
 
+#include <particulate/geometry/bounding_box.h>
 #include <particulate/rigid/world.h>
 
 #include <Eigen/Core>
@@ -114,6 +115,13 @@ namespace particulate {
      *  @p dim axes [m]: the size that a step may not move it by. */
     double
     body_size(const rigid::RigidBody &body, const unsigned int dim);
+
+    /** The box of the world axes that the body fills at its pose: exact
+     *  for convex shapes (their support points) and surface meshes (their
+     *  vertices); for other non-convex shapes the box of their surface
+     *  points, for those without, the placed bounding box. */
+    geometry::BoundingBox
+    placed_extent(const rigid::RigidBody &body);
 
     /** The coordinate of the body's furthest point along the world axis
      *  @p d, towards + (@p positive) or - (exact for convex shapes and
