@@ -33,7 +33,7 @@ import sys
 
 import numpy as np
 
-from particulate_output import (read_parameters, read_series, read_table,
+from particulate_output import (read_parameters, read_series, redraw_if_asked,
                                 write_table)
 
 
@@ -127,8 +127,7 @@ def draw(path, header, table):
 
 
 def main():
-    if len(sys.argv) == 4 and sys.argv[1] == "--redraw":
-        draw(sys.argv[3], *read_table(sys.argv[2]))
+    if redraw_if_asked(draw):
         return
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("runs", nargs="+")

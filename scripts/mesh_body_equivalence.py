@@ -30,7 +30,7 @@ import sys
 
 import numpy as np
 
-from particulate_output import read_series, read_table, write_table
+from particulate_output import read_series, redraw_if_asked, write_table
 from ten_cate_ellipsoid import long_axis_tilt
 
 
@@ -74,8 +74,7 @@ def draw(path, header, table):
 
 
 def main():
-    if len(sys.argv) == 4 and sys.argv[1] == "--redraw":
-        draw(sys.argv[3], *read_table(sys.argv[2]))
+    if redraw_if_asked(draw):
         return
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("analytic")

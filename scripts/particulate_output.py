@@ -1,6 +1,7 @@
 """Readers of what a Particulate run writes into its output folder, for the
 scripts next to this file."""
 import os
+import sys
 
 import numpy as np
 
@@ -44,3 +45,12 @@ def read_table(path):
     with open(path) as f:
         header = f.readline().lstrip("#").split()
     return header, np.loadtxt(path, ndmin=2)
+
+
+def redraw_if_asked(draw):
+    """`SCRIPT --redraw SERIES FIGURE`: draw FIGURE from the committed SERIES
+    with `draw(path, header, table)`; True if that was asked."""
+    if len(sys.argv) == 4 and sys.argv[1] == "--redraw":
+        draw(sys.argv[3], *read_table(sys.argv[2]))
+        return True
+    return False

@@ -18,11 +18,10 @@ draws the figure again from a committed series.
 import argparse
 import csv
 import os
-import sys
 
 import numpy as np
 
-from particulate_output import read_series, read_table, write_table
+from particulate_output import read_series, redraw_if_asked, write_table
 
 
 def free_bodies(folder):
@@ -53,8 +52,7 @@ def draw(path, header, table):
 
 
 def main():
-    if len(sys.argv) == 4 and sys.argv[1] == "--redraw":
-        draw(sys.argv[3], *read_table(sys.argv[2]))
+    if redraw_if_asked(draw):
         return
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("run")

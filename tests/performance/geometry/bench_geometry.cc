@@ -41,6 +41,21 @@ namespace {
     return std::chrono::duration<double>(Clock::now() - t0).count();
   }
 
+  // The n^3 vertices of a uniform lattice of the unit cube.
+  std::vector<Vector3d>
+  unit_cube_lattice(const int n)
+  {
+    std::vector<Vector3d> pts;
+    pts.reserve(std::size_t(n) * n * n);
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+          pts.emplace_back(i / double(n - 1),
+                           j / double(n - 1),
+                           k / double(n - 1));
+    return pts;
+  }
+
   // Keeps results alive so the compiler cannot drop the timed loops.
   volatile double sink = 0.;
 
@@ -231,24 +246,17 @@ namespace {
               const std::vector<PlacedShape> &bodies,
               const bool                      brute)
   {
-    std::vector<Vector3d> pts;
-    pts.reserve(std::size_t(n) * n * n);
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-          pts.emplace_back(i / double(n - 1),
-                           j / double(n - 1),
-                           k / double(n - 1));
-    const auto            t0 = Clock::now();
-    const PointHashGrid   grid(pts);
-    const double          t_grid = seconds_since(t0);
-    ContainmentStatistics stats;
-    std::vector<int>      fast;
-    const double          t_fast = median_seconds(5, [&] {
+    const std::vector<Vector3d> pts = unit_cube_lattice(n);
+    const auto                  t0  = Clock::now();
+    const PointHashGrid         grid(pts);
+    const double                t_grid = seconds_since(t0);
+    ContainmentStatistics       stats;
+    std::vector<int>            fast;
+    const double                t_fast = median_seconds(5, [&] {
       fast = classify_points(grid, bodies, nullptr, &stats);
     });
-    double                t_slow = 0.;
-    bool                  same   = true;
+    double                      t_slow = 0.;
+    bool                        same   = true;
     if (brute)
       {
         const auto t2   = Clock::now();
@@ -377,15 +385,8 @@ namespace {
       {
         if ((quick && n > 65) || (!quick && n < 65))
           continue;
-        std::vector<Vector3d> pts;
-        pts.reserve(std::size_t(n) * n * n);
-        for (int k = 0; k < n; ++k)
-          for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-              pts.emplace_back(i / double(n - 1),
-                               j / double(n - 1),
-                               k / double(n - 1));
-        const double nodes = double(pts.size());
+        const std::vector<Vector3d> pts   = unit_cube_lattice(n);
+        const double                nodes = double(pts.size());
         // the FBM's tolerance: 1e-10 of half the node spacing
         const double        tolerance = 1e-10 * 0.5 / (n - 1);
         const auto          t0        = Clock::now();
