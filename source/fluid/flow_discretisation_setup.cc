@@ -15,6 +15,7 @@
 #include <chrono>
 #include <set>
 
+#include "enclosed_fluid.h"
 #include "momentum_operator.h"
 #include "undetermined_pressures.h"
 
@@ -244,13 +245,34 @@ namespace particulate {
         }
       // The search depends on the covered nodes and the mesh only: the
       // stages of a time step (same bodies, new Dirichlet times) reuse it.
-      if (prescribed != decoupled_pressures_searched_for)
+      // All ranks search when one's nodes changed: the pockets are found
+      // together.
+      if (Utilities::MPI::logical_or(prescribed
+                                       != decoupled_pressures_searched_for,
+                                     communicator))
         {
           decoupled_pressure_dofs
             = find_undetermined_pressure_dofs(dof_handler,
                                               mapping,
                                               zero_constraints,
                                               prescribed);
+          // fluid the bodies wall off from the flow (none without them)
+          const bool any_prescribed
+            = Utilities::MPI::logical_or(!prescribed.empty(), communicator);
+          const EnclosedFluid enclosed_fluid
+            = any_prescribed ? find_enclosed_fluid(dof_handler,
+                                                   zero_constraints,
+                                                   decoupled_pressure_dofs,
+                                                   communicator) :
+                               EnclosedFluid();
+          enclosed_pockets = enclosed_fluid.n_pockets;
+          std::vector<types::global_dof_index> merged;
+          std::set_union(decoupled_pressure_dofs.begin(),
+                         decoupled_pressure_dofs.end(),
+                         enclosed_fluid.pinned_pressures.begin(),
+                         enclosed_fluid.pinned_pressures.end(),
+                         std::back_inserter(merged));
+          decoupled_pressure_dofs          = std::move(merged);
           decoupled_pressures_searched_for = std::move(prescribed);
         }
     }

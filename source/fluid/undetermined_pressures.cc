@@ -15,18 +15,6 @@ namespace particulate {
     using namespace dealii;
 
     namespace {
-      /// A velocity DoF whose value a constraint fixes (no other DoF in its
-      /// line); a hanging node, which follows free DoFs, stays free.
-      bool
-      is_fixed(const AffineConstraints<double> &constraints,
-               const types::global_dof_index    dof)
-      {
-        const auto *entries = constraints.get_constraint_entries(dof);
-        return entries != nullptr && entries->empty();
-      }
-
-
-
       /**
        * Rows of `null_basis` (n x k, columns spanning the null space) to
        * pin, one per column, chosen by Gaussian elimination with the largest
@@ -124,7 +112,7 @@ namespace particulate {
                                                  prescribed_dofs.end(),
                                                  dof);
               all_constrained &= zero_constraints.is_constrained(dof);
-              if (!is_fixed(zero_constraints, dof))
+              if (!is_fixed_by_constraint(zero_constraints, dof))
                 free.push_back(j);
             }
           if (!touches_body)

@@ -14,6 +14,16 @@
 
 namespace particulate {
   namespace fluid {
+    /// A velocity DoF whose value a constraint fixes (no other DoF in its
+    /// line); a hanging node, which follows free DoFs, stays free.
+    inline bool
+    is_fixed_by_constraint(const dealii::AffineConstraints<double> &constraints,
+                           const dealii::types::global_dof_index    dof)
+    {
+      const auto *entries = constraints.get_constraint_entries(dof);
+      return entries != nullptr && entries->empty();
+    }
+
     /**
      * Pressure DoFs (locally owned, sorted) to decouple from the flow.
      *

@@ -280,6 +280,15 @@ namespace particulate {
       {
         return parameters;
       }
+      /** Pockets of fluid that the constraints wall off from the flow,
+       *  whose pressure is decoupled in one cell each (at the last set-up
+       *  of the constraints). */
+      unsigned int
+      n_enclosed_pockets() const
+      {
+        return enclosed_pockets;
+      }
+
       MPI_Comm
       get_communicator() const
       {
@@ -373,6 +382,9 @@ namespace particulate {
       /// find_undetermined_pressure_dofs). They are decoupled: no row or
       /// column in the system, and kept at zero after every Newton update.
       std::vector<dealii::types::global_dof_index> decoupled_pressure_dofs;
+      /// pockets of fluid walled off from the flow by the constraints,
+      /// among them one decoupled pressure each (find_enclosed_fluid)
+      unsigned int enclosed_pockets = 0;
       /// the covered velocity DoFs that search was made for (a list that
       /// matches none after new DoFs or a moved mesh)
       std::vector<dealii::types::global_dof_index>

@@ -241,6 +241,15 @@ namespace particulate {
       {
         return parameters;
       }
+      /** Pockets of fluid that the covered nodes and walls enclose, apart
+       *  from the flow: each has the pressure of one cell decoupled, whose
+       *  continuity equation takes up the flux that the bodies around it
+       *  impose (FlowDiscretisation::n_enclosed_pockets()). */
+      unsigned int
+      n_enclosed_pockets() const
+      {
+        return discretisation.n_enclosed_pockets();
+      }
       MPI_Comm
       get_communicator() const
       {
