@@ -11,11 +11,16 @@ namespace particulate {
     }
 
     bool
+    is_surface_mesh(const geometry::Shape &shape)
+    {
+      return dynamic_cast<const geometry::MappedSurface *>(&shape) != nullptr;
+    }
+
+    bool
     containment_engine_takes(const geometry::Shape &shape,
                              const unsigned int     dim)
     {
-      return is_rotation_invariant(shape, dim)
-             || dynamic_cast<const geometry::MappedSurface *>(&shape);
+      return is_rotation_invariant(shape, dim) || is_surface_mesh(shape);
     }
   } // namespace fbm
 } // namespace particulate

@@ -16,6 +16,7 @@
 #include <particulate/fbm/prescribed_motion.h>
 #include <particulate/fbm/rigid_body_update.h>
 #include <particulate/fbm/set_up_warnings.h>
+#include <particulate/fbm/surface_resolution_report.h>
 #include <particulate/fluid/flow_diagnostics.h>
 #include <particulate/fluid/navier_stokes.h>
 #include <particulate/fluid/run_frame.h>
@@ -253,6 +254,8 @@ namespace particulate {
                                 parameters.restart,
                                 t);
       r.output.write_particle_table(particle_p.bodies);
+      if (!parameters.restart)
+        report_surface_resolution_at_start();
       r.start_progress(t);
       r.mesh_follows
         = r.adapted_mesh
@@ -410,6 +413,24 @@ namespace particulate {
               << " m\nContainment: " << r.interface->containment_method()
               << std::endl;
       warn_about_set_up();
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::report_surface_resolution_at_start() const
+    {
+      const Run                  &r = *run_;
+      std::vector<geometry::Pose> poses;
+      for (const auto &start : r.starts)
+        poses.emplace_back(start.orientation, start.position);
+      r.pcout << report_surface_resolution(r.tria,
+                                           parameters.particles.bodies,
+                                           poses,
+                                           r.output.directory(),
+                                           communicator)
+              << std::flush;
     }
 
 
@@ -852,7 +873,7 @@ namespace particulate {
           TimerOutput::Scope scope(r.timer, "output");
           r.output.write_fields(*r.flow, *r.world, step, t);
         }
-      r.report_step(step, t, k, r.statistics, leading_speed());
+      r.report_step(step, t, k, r.statistics, progress_details());
     }
 
 
@@ -937,12 +958,19 @@ namespace particulate {
 
     template <int dim>
     std::string
-    ParticulateFlowSimulation<dim>::leading_speed() const
+    ParticulateFlowSimulation<dim>::progress_details() const
     {
-      char                   buffer[64];
+      char                   buffer[96];
       const Eigen::Vector3d &u
         = run_->world->body(run_->ids[0]).linear_velocity;
-      std::snprintf(buffer, sizeof(buffer), "  |U_0| %.5g m/s", u.norm());
+      const unsigned int pockets = run_->flow->n_enclosed_pockets();
+      int                n
+        = std::snprintf(buffer, sizeof(buffer), "  |U_0| %.5g m/s", u.norm());
+      if (pockets > 0)
+        std::snprintf(buffer + n,
+                      sizeof(buffer) - n,
+                      "  enclosed fluid pockets %u",
+                      pockets);
       return std::string(buffer);
     }
 
@@ -963,7 +991,7 @@ namespace particulate {
         TimerOutput::Scope scope(r.timer, "output");
         r.output.write_fields(*r.flow, *r.world, 1, 0.);
       }
-      r.report_step(1, 1., 0., r.statistics, leading_speed());
+      r.report_step(1, 1., 0., r.statistics, progress_details());
     }
 
 

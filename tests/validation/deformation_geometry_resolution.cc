@@ -6,7 +6,9 @@
 //   max( max over face points of |d|, max over surface points of the
 //        distance to the nearest face point ),
 // with face points = face vertices and centres, surface points = the
-// triangle vertices and centroids, and by the error of the enclosed volume.
+// triangle vertices and centroids, and by the error of the enclosed volume
+// (deformation::measure_surface_resolution, which a 3D particulate-flow run
+// also reports for its surface-mesh bodies).
 // A slice through the middle of the body is written for the figure.
 //
 // Usage: deformation_geometry_resolution SURFACE.off OUTPUT_DIR [LEVELS]
@@ -21,6 +23,7 @@
 #include <particulate/deformation/distance_field.h>
 #include <particulate/deformation/laplace_smoothing.h>
 #include <particulate/deformation/mesh_quality.h>
+#include <particulate/deformation/surface_resolution.h>
 #include <particulate/geometry/mesh_io.h>
 #include <particulate/geometry/triangulated_surface.h>
 
@@ -41,67 +44,6 @@ using namespace particulate;
 using namespace particulate::deformation;
 
 namespace {
-  struct Resolution
-  {
-    double       hausdorff = 0., mean_face_distance = 0., volume_error = 0.;
-    unsigned int solid_cells = 0;
-  };
-
-  Eigen::Vector3d
-  eigen(const Point<3> &p)
-  {
-    return {p[0], p[1], p[2]};
-  }
-
-  Resolution
-  measure(const Triangulation<3>              &tria,
-          const geometry::TriangulatedSurface &surface,
-          const geometry::TriangleMesh        &mesh,
-          const double                         true_volume)
-  {
-    Resolution            r;
-    std::vector<Point<3>> samples;
-    double                solid_volume = 0.;
-    auto                  solid        = [&](const auto &cell) {
-      return surface.signed_distance(eigen(cell->center())) < 0.;
-    };
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        if (!solid(cell))
-          continue;
-        ++r.solid_cells;
-        solid_volume += cell->measure();
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) || !solid(cell->neighbor(f)))
-            {
-              samples.push_back(cell->face(f)->center());
-              for (const unsigned int v : cell->face(f)->vertex_indices())
-                samples.push_back(cell->face(f)->vertex(v));
-            }
-      }
-    for (const auto &x : samples)
-      {
-        const double d = std::abs(surface.signed_distance(eigen(x)));
-        r.hausdorff    = std::max(r.hausdorff, d);
-        r.mean_face_distance += d / samples.size();
-      }
-    for (const auto &t : mesh.triangles)
-      for (int k = 0; k < 4; ++k)
-        {
-          const Eigen::Vector3d p       = k < 3 ?
-                                            mesh.vertices[t[k]] :
-                                            (mesh.vertices[t[0]] + mesh.vertices[t[1]]
-                                       + mesh.vertices[t[2]])
-                                        / 3.;
-          double                nearest = 1e300;
-          for (const auto &x : samples)
-            nearest = std::min(nearest, (eigen(x) - p).squaredNorm());
-          r.hausdorff = std::max(r.hausdorff, std::sqrt(nearest));
-        }
-    r.volume_error = (solid_volume - true_volume) / true_volume;
-    return r;
-  }
-
   /** The cells cut by the plane z = @p z, as polygons, for the figure. */
   void
   write_slice(const Triangulation<3> &tria,
@@ -214,9 +156,10 @@ main(int argc, char **argv)
             }
           else
             report.quality = compute_mesh_quality(tria);
-          const double      seconds = timer.wall_time();
-          const Resolution  r       = measure(tria, surface, mesh, true_volume);
-          const std::string name    = adapt ? "Laplace-kappa" : "not adapted";
+          const double            seconds = timer.wall_time();
+          const SurfaceResolution r
+            = measure_surface_resolution(tria, surface, geometry::Pose());
+          const std::string name = adapt ? "Laplace-kappa" : "not adapted";
           dat << level << ' ' << tria.n_active_cells() << ' ' << h / size << ' '
               << (adapt ? "laplace-kappa" : "none") << ' ' << r.hausdorff / size
               << ' ' << r.mean_face_distance / size << ' ' << r.volume_error

@@ -15,6 +15,11 @@ namespace particulate {
     bool
     is_rotation_invariant(const geometry::Shape &shape, const unsigned int dim);
 
+    /** Whether @p shape is a body read from a surface mesh (seen through
+     *  its distance map). */
+    bool
+    is_surface_mesh(const geometry::Shape &shape);
+
     /**
      * Whether the cuda/ containment engine can mark the nodes inside a body
      * of shape @p shape: a rotation-invariant one (its one-sphere set) or a

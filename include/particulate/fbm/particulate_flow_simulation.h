@@ -254,14 +254,20 @@ namespace particulate {
       bool
       checkpoint_due() const;
       /** What the progress line adds to the solver's counts: the speed of
-       *  particle 0. */
+       *  particle 0, and the pockets of fluid the bodies wall off from the
+       *  flow, if any (fluid::NavierStokes::n_enclosed_pockets()). */
       std::string
-      leading_speed() const;
+      progress_details() const;
 
       /** What the step of size @p k starts from (CFL number, the fastest
        *  particle, contacts), for the message of a failed flow solve. */
       StepConditions
       measure_step_conditions(const double k) const;
+
+      /** Measure, write and print how the mesh sees each surface-mesh
+       *  body where it starts (report_surface_resolution()). */
+      void
+      report_surface_resolution_at_start() const;
 
       /** Print the set-up warnings (particles resolved by few cells, too
        *  light for the coupling). */
