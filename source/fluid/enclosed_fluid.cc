@@ -106,8 +106,21 @@ namespace particulate {
               pressure_constant = i;
           }
 
-        DisjointSets                                              sets;
-        std::unordered_map<types::global_dof_index, unsigned>     set_of_dof;
+        DisjointSets sets;
+        // each free velocity DoF's element of `sets`: owned ones by their
+        // place in the owned range, the others in a map
+        const IndexSet           &owned = dof_handler.locally_owned_dofs();
+        std::vector<unsigned int> set_of_owned(owned.n_elements(), ~0u);
+        std::unordered_map<types::global_dof_index, unsigned> set_of_other;
+        const auto element_of = [&](const types::global_dof_index dof) {
+          unsigned int &element
+            = owned.is_element(dof) ?
+                set_of_owned[owned.index_within_set(dof)] :
+                set_of_other.emplace(dof, ~0u).first->second;
+          if (element == ~0u)
+            element = sets.add();
+          return element;
+        };
         std::vector<std::pair<unsigned, types::global_dof_index>> cell_sets;
         std::unordered_set<types::global_dof_index>               ghost_dofs;
         std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -126,14 +139,11 @@ namespace particulate {
             for (const unsigned int j : velocity_local)
               if (!is_fixed_by_constraint(zero_constraints, dofs[j]))
                 {
-                  const auto [it, inserted]
-                    = set_of_dof.emplace(dofs[j], sets.size());
-                  if (inserted)
-                    sets.add();
+                  const unsigned int element = element_of(dofs[j]);
                   if (first < 0)
-                    first = it->second;
+                    first = element;
                   else
-                    sets.join(first, it->second);
+                    sets.join(first, element);
                 }
             if (first >= 0)
               cell_sets.emplace_back(first, dofs[pressure_constant]);
@@ -164,15 +174,17 @@ namespace particulate {
             if (local.pressure[n] == numbers::invalid_dof_index)
               local.pressure[n] = pressure;
           }
-        const IndexSet &owned = dof_handler.locally_owned_dofs();
-        for (const auto &[dof, i] : set_of_dof)
-          {
-            const unsigned int n = set_number(i);
-            if (owned.is_element(dof))
+        for (unsigned int k = 0; k < set_of_owned.size(); ++k)
+          if (set_of_owned[k] != ~0u)
+            {
+              const unsigned int n = set_number(set_of_owned[k]);
               ++local.sizes[n];
-            if (ghost_dofs.count(dof) > 0)
-              local.shared.insert(local.shared.end(), {dof, n});
-          }
+              const types::global_dof_index dof = owned.nth_index_in_set(k);
+              if (ghost_dofs.count(dof) > 0)
+                local.shared.insert(local.shared.end(), {dof, n});
+            }
+        for (const auto &[dof, i] : set_of_other)
+          local.shared.insert(local.shared.end(), {dof, set_number(i)});
         return local;
       }
 

@@ -257,7 +257,8 @@ namespace particulate {
                                               zero_constraints,
                                               prescribed);
           // fluid the bodies wall off from the flow (none without them)
-          const bool any_prescribed
+          TimerOutput::Scope scope(timer, "fluid: enclosed fluid search");
+          const bool         any_prescribed
             = Utilities::MPI::logical_or(!prescribed.empty(), communicator);
           const EnclosedFluid enclosed_fluid
             = any_prescribed ? find_enclosed_fluid(dof_handler,
