@@ -5,8 +5,9 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
-#include <numeric>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -17,46 +18,6 @@ namespace particulate {
     using namespace dealii;
 
     namespace {
-      /// a set whose pressure is decoupled (join_across_ranks())
-      constexpr char decouple = 1;
-
-      /** Disjoint sets of 0 ... n-1, by parent links with path halving. */
-      class DisjointSets
-      {
-      public:
-        unsigned int
-        add()
-        {
-          parent.push_back(parent.size());
-          return parent.size() - 1;
-        }
-
-        unsigned int
-        find(unsigned int i)
-        {
-          while (parent[i] != i)
-            i = parent[i] = parent[parent[i]];
-          return i;
-        }
-
-        void
-        join(const unsigned int a, const unsigned int b)
-        {
-          const unsigned int ra = find(a), rb = find(b);
-          if (ra != rb)
-            parent[std::max(ra, rb)] = std::min(ra, rb);
-        }
-
-        unsigned int
-        size() const
-        {
-          return parent.size();
-        }
-
-      private:
-        std::vector<unsigned int> parent;
-      };
-
       /**
        * One rank's sets: their free velocity DoFs owned here, a pressure
        * DoF (a cell's constant mode) of each, and the sets' DoFs that ghost
@@ -106,54 +67,58 @@ namespace particulate {
               pressure_constant = i;
           }
 
-        DisjointSets sets;
-        // each free velocity DoF's element of `sets`: owned ones by their
-        // place in the owned range, the others in a map
-        const IndexSet           &owned = dof_handler.locally_owned_dofs();
-        std::vector<unsigned int> set_of_owned(owned.n_elements(), ~0u);
-        std::unordered_map<types::global_dof_index, unsigned> set_of_other;
+        // Elements of `sets`: an owned DoF's place in the owned range, then
+        // the DoFs owned elsewhere, all of which lie on ghost cells too.
+        std::unordered_set<types::global_dof_index> ghost_dofs;
+        std::vector<types::global_dof_index>        dofs(fe.n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_ghost())
+            {
+              cell->get_dof_indices(dofs);
+              for (const unsigned int j : velocity_local)
+                ghost_dofs.insert(dofs[j]);
+            }
+        const IndexSet &owned   = dof_handler.locally_owned_dofs();
+        const auto      n_owned = owned.n_elements();
+        boost::disjoint_sets_with_storage<> sets(n_owned + ghost_dofs.size());
+        std::vector<bool>                   owned_free(n_owned, false);
+        std::unordered_map<types::global_dof_index, std::size_t> other;
         const auto element_of = [&](const types::global_dof_index dof) {
-          unsigned int &element
-            = owned.is_element(dof) ?
-                set_of_owned[owned.index_within_set(dof)] :
-                set_of_other.emplace(dof, ~0u).first->second;
-          if (element == ~0u)
-            element = sets.add();
-          return element;
+          if (owned.is_element(dof))
+            {
+              const auto k  = owned.index_within_set(dof);
+              owned_free[k] = true;
+              return static_cast<std::size_t>(k);
+            }
+          return n_owned + other.emplace(dof, other.size()).first->second;
         };
-        std::vector<std::pair<unsigned, types::global_dof_index>> cell_sets;
-        std::unordered_set<types::global_dof_index>               ghost_dofs;
-        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+        constexpr std::size_t invalid = ~std::size_t(0);
+        std::vector<std::pair<std::size_t, types::global_dof_index>> cell_sets;
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
-            if (cell->is_artificial())
+            if (!cell->is_locally_owned())
               continue;
             cell->get_dof_indices(dofs);
-            if (cell->is_ghost())
-              {
-                for (const unsigned int j : velocity_local)
-                  ghost_dofs.insert(dofs[j]);
-                continue;
-              }
-            int first = -1;
+            std::size_t first = invalid;
             for (const unsigned int j : velocity_local)
               if (!is_fixed_by_constraint(zero_constraints, dofs[j]))
                 {
-                  const unsigned int element = element_of(dofs[j]);
-                  if (first < 0)
+                  const std::size_t element = element_of(dofs[j]);
+                  if (first == invalid)
                     first = element;
                   else
-                    sets.join(first, element);
+                    sets.union_set(first, element);
                 }
-            if (first >= 0)
+            if (first != invalid)
               cell_sets.emplace_back(first, dofs[pressure_constant]);
           }
 
         // number the sets 0, 1, ... by their roots
         LocalSets                 local;
-        std::vector<unsigned int> number(sets.size(), ~0u);
-        const auto                set_number = [&](const unsigned int i) {
-          unsigned int &n = number[sets.find(i)];
+        std::vector<unsigned int> number(n_owned + ghost_dofs.size(), ~0u);
+        const auto                set_number = [&](const std::size_t i) {
+          unsigned int &n = number[sets.find_set(i)];
           if (n == ~0u)
             {
               n = local.sizes.size();
@@ -174,35 +139,33 @@ namespace particulate {
             if (local.pressure[n] == numbers::invalid_dof_index)
               local.pressure[n] = pressure;
           }
-        for (unsigned int k = 0; k < set_of_owned.size(); ++k)
-          if (set_of_owned[k] != ~0u)
+        for (unsigned int k = 0; k < n_owned; ++k)
+          if (owned_free[k])
             {
-              const unsigned int n = set_number(set_of_owned[k]);
+              const unsigned int n = set_number(k);
               ++local.sizes[n];
               const types::global_dof_index dof = owned.nth_index_in_set(k);
               if (ghost_dofs.count(dof) > 0)
                 local.shared.insert(local.shared.end(), {dof, n});
             }
-        for (const auto &[dof, i] : set_of_other)
-          local.shared.insert(local.shared.end(), {dof, set_number(i)});
+        for (const auto &[dof, j] : other)
+          local.shared.insert(local.shared.end(),
+                              {dof, set_number(n_owned + j)});
         return local;
       }
 
       /**
        * On the root: the sets of all ranks joined through their shared
-       * DoFs. Returns, per rank and set, `decouple` if that set's pressure
-       * is to be decoupled (one set of every pocket); counts the pockets.
+       * DoFs. Returns, per rank and set, whether that set's pressure is to
+       * be decoupled: one set of every pocket.
        */
       std::vector<std::vector<char>>
-      join_across_ranks(const std::vector<LocalSets> &ranks,
-                        EnclosedFluid                &found)
+      join_across_ranks(const std::vector<LocalSets> &ranks)
       {
         std::vector<unsigned int> offset(ranks.size() + 1, 0);
         for (unsigned int r = 0; r < ranks.size(); ++r)
           offset[r + 1] = offset[r] + ranks[r].sizes.size();
-        DisjointSets sets;
-        for (unsigned int i = 0; i < offset.back(); ++i)
-          sets.add();
+        boost::disjoint_sets_with_storage<> sets(offset.back());
         std::vector<std::pair<unsigned long long, unsigned int>> shared;
         for (unsigned int r = 0; r < ranks.size(); ++r)
           for (std::size_t k = 0; k < ranks[r].shared.size(); k += 2)
@@ -211,12 +174,14 @@ namespace particulate {
         std::sort(shared.begin(), shared.end());
         for (std::size_t k = 1; k < shared.size(); ++k)
           if (shared[k].first == shared[k - 1].first)
-            sets.join(shared[k].second, shared[k - 1].second);
+            sets.union_set(std::size_t(shared[k].second),
+                           std::size_t(shared[k - 1].second));
 
         std::vector<unsigned long long> size(offset.back(), 0);
         for (unsigned int r = 0; r < ranks.size(); ++r)
           for (unsigned int n = 0; n < ranks[r].sizes.size(); ++n)
-            size[sets.find(offset[r] + n)] += ranks[r].sizes[n];
+            size[sets.find_set(std::size_t(offset[r] + n))]
+              += ranks[r].sizes[n];
         const auto largest = std::max_element(size.begin(), size.end());
 
         std::vector<std::vector<char>> pin(ranks.size());
@@ -225,14 +190,10 @@ namespace particulate {
             pin[r].assign(ranks[r].sizes.size(), 0);
             for (unsigned int n = 0; n < ranks[r].sizes.size(); ++n)
               {
-                const unsigned int i = offset[r] + n;
-                // a root is the lowest index of its set: pin there
-                if (sets.find(i) == i && size.begin() + i != largest)
-                  {
-                    pin[r][n] = decouple;
-                    ++found.n_pockets;
-                    found.n_pocket_dofs += size[i];
-                  }
+                // at the representative of every set but the largest
+                const std::size_t i = offset[r] + n;
+                pin[r][n]
+                  = sets.find_set(i) == i && size.begin() + i != largest;
               }
           }
         return pin;
@@ -259,17 +220,14 @@ namespace particulate {
           std::vector<LocalSets> all;
           for (const auto &packed : gathered)
             all.push_back(LocalSets::unpacked(packed));
-          pin = join_across_ranks(all, found);
+          pin = join_across_ranks(all);
         }
       pin = Utilities::MPI::broadcast(communicator, pin, 0);
-      found.n_pockets
-        = Utilities::MPI::broadcast(communicator, found.n_pockets, 0);
-      found.n_pocket_dofs
-        = Utilities::MPI::broadcast(communicator, found.n_pocket_dofs, 0);
+      for (const auto &rank : pin)
+        found.n_pockets += std::count(rank.begin(), rank.end(), 1);
       const auto &mine = pin[Utilities::MPI::this_mpi_process(communicator)];
       for (unsigned int n = 0; n < mine.size(); ++n)
-        if (mine[n] == decouple
-            && local.pressure[n] != numbers::invalid_dof_index)
+        if (mine[n] && local.pressure[n] != numbers::invalid_dof_index)
           found.pinned_pressures.push_back(local.pressure[n]);
       std::sort(found.pinned_pressures.begin(), found.pinned_pressures.end());
       return found;

@@ -16,9 +16,8 @@ namespace particulate {
     /** What find_enclosed_fluid() found. */
     struct EnclosedFluid
     {
-      /// pockets over all ranks, and their free velocity DoFs
-      unsigned int       n_pockets     = 0;
-      unsigned long long n_pocket_dofs = 0;
+      /// pockets over all ranks
+      unsigned int n_pockets = 0;
       /// locally owned pressure DoFs to decouple, one per pocket (sorted)
       std::vector<dealii::types::global_dof_index> pinned_pressures;
     };
