@@ -357,13 +357,15 @@ namespace particulate {
 #endif
     }
 
-    double
+    KernelTiming
     ContainmentEngine::time_kernel(const float        *xyz,
                                    const std::size_t   n,
                                    const BodyInstance *bodies,
                                    const std::size_t   m,
                                    const bool          with_distance,
-                                   const int           repetitions)
+                                   const int           single_launches,
+                                   const int           batch,
+                                   const int           batches)
     {
 #if PARTICULATE_CONTAINMENT_WITH_CUDA
       if (impl->gpu)
@@ -371,7 +373,13 @@ namespace particulate {
           impl->check_bodies(bodies, m);
           detail::SceneGrid &g = impl->scene;
           detail::build_scene_grid(bodies, m, impl->views, impl->boxes, g);
-          return impl->gpu->time_kernel(g, xyz, n, with_distance, repetitions);
+          return impl->gpu->time_kernel(g,
+                                        xyz,
+                                        n,
+                                        with_distance,
+                                        single_launches,
+                                        batch,
+                                        batches);
         }
 #else
       (void)xyz;
@@ -379,7 +387,9 @@ namespace particulate {
       (void)bodies;
       (void)m;
       (void)with_distance;
-      (void)repetitions;
+      (void)single_launches;
+      (void)batch;
+      (void)batches;
 #endif
       throw std::logic_error("time_kernel() needs the CUDA backend");
     }

@@ -7,11 +7,13 @@
 // other expression can be contracted behind our back. The CPU twin computes
 // the same sequence of rounded operations, so results agree bit for bit.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "cuda_backend.h"
 #include <cuda_runtime.h>
@@ -109,11 +111,15 @@ namespace particulate {
          * range is written. Measured on an H200 and kept simple: staging the
          * points through shared memory or shuffles with 16-byte loads,
          * copying body records with 16-byte loads, giving each thread 2 or 4
-         * points, bricked or 8-corner map layouts, two or four sphere
-         * entries per loop step, and persistent grids were all slower or no
-         * faster. What bounds it is the L2 traffic of the
-         * map gathers and the latency of dependent loads (cell, body, map),
-         * not DRAM; see doc/performance.md, "CUDA containment".
+         * points (also as a grid-stride loop that loads the next point
+         * before classifying the current one), 64 or 256 threads per block,
+         * bricked or 8-corner map layouts, four sphere entries per loop step,
+         * a kernel specialised at compile time for flags only or with
+         * distances, L2 prefetch hints on the points, and persistent grids
+         * were all slower or no faster. What bounds it is the L2 traffic of
+         * the map gathers and the latency of dependent loads (cell, body,
+         * map, sphere entries), not DRAM; see doc/performance.md, "CUDA
+         * containment".
          */
         __global__ void
         __launch_bounds__(threads_per_block)
@@ -142,6 +148,29 @@ namespace particulate {
             __stcs(first_body + p, f);
           if (distance != nullptr)
             __stcs(distance + p, d);
+        }
+
+        /**
+         * The reference for what the classification costs: the launch, loads
+         * and stores of classify_kernel with a trivial function of the point
+         * in place of classify_point() (used by time_kernel() only).
+         */
+        __global__ void
+        __launch_bounds__(threads_per_block)
+          io_only_kernel(const float *__restrict__ xyz,
+                         const int n,
+                         int *__restrict__ first_body,
+                         float *__restrict__ distance)
+        {
+          const int p = blockIdx.x * threads_per_block + threadIdx.x;
+          if (p >= n)
+            return;
+          const float x = __ldcs(xyz + 3 * p), y = __ldcs(xyz + 3 * p + 1),
+                      z = __ldcs(xyz + 3 * p + 2);
+          if (first_body != nullptr)
+            __stcs(first_body + p, x + y > z ? 0 : -1);
+          if (distance != nullptr)
+            __stcs(distance + p, x - z);
         }
 
         void
@@ -400,106 +429,217 @@ namespace particulate {
           PARTICULATE_CUDA_CHECK(cudaStreamSynchronize(st));
       }
 
-      double
+      namespace {
+        /** A pair of timing events, destroyed with the object. */
+        struct EventPair
+        {
+          cudaEvent_t start = nullptr, stop = nullptr;
+
+          EventPair()
+          {
+            PARTICULATE_CUDA_CHECK(cudaEventCreate(&start));
+            if (cudaEventCreate(&stop) != cudaSuccess)
+              {
+                cudaEventDestroy(start);
+                PARTICULATE_CUDA_CHECK(cudaGetLastError());
+              }
+          }
+
+          ~EventPair()
+          {
+            cudaEventDestroy(start);
+            cudaEventDestroy(stop);
+          }
+
+          /** Milliseconds from start to stop, once stop has happened. */
+          double
+          elapsed_ms() const
+          {
+            PARTICULATE_CUDA_CHECK(cudaEventSynchronize(stop));
+            float ms = 0.f;
+            PARTICULATE_CUDA_CHECK(cudaEventElapsedTime(&ms, start, stop));
+            return ms;
+          }
+        };
+
+        double
+        median(std::vector<double> v)
+        {
+          std::sort(v.begin(), v.end());
+          return v.size() % 2 == 1 ?
+                   v[v.size() / 2] :
+                   0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+        }
+
+        /**
+         * Number of copies of a working set of `bytes` that back-to-back
+         * timings rotate over: enough that together they are at least four
+         * times the L2 cache, so that a launch does not find its inputs in
+         * the cache the previous launches left; between 1 and `at_most`.
+         */
+        int
+        rotation_sets(const cudaDeviceProp &prop,
+                      const std::size_t     bytes,
+                      const int             at_most)
+        {
+          const double l2 = std::max(prop.l2CacheSize, 1);
+          const double k
+            = std::ceil(4. * l2 / double(std::max<std::size_t>(bytes, 1)));
+          return static_cast<int>(
+            std::max(1., std::min(k, double(std::max(1, at_most)))));
+        }
+      } // namespace
+
+      KernelTiming
       CudaBackend::time_kernel(const SceneGrid  &scene,
                                const float      *xyz,
                                const std::size_t n,
                                const bool        with_distance,
-                               const int         repetitions)
+                               const int         single_launches,
+                               const int         batch,
+                               const int         batches)
       {
-        State &s = *state;
+        State       &s = *state;
+        KernelTiming timing;
         if (n == 0)
-          return 0.;
-        s.xyz.reserve(3 * n * sizeof(float));
-        s.first.reserve(n * sizeof(int));
-        if (with_distance)
-          s.dist.reserve(n * sizeof(float));
+          return timing;
+        // One working set = points, flags and (optionally) distances.
+        const std::size_t xyz_bytes   = align_up(3 * n * sizeof(float));
+        const std::size_t first_bytes = align_up(n * sizeof(int));
+        const std::size_t dist_bytes
+          = with_distance ? align_up(n * sizeof(float)) : 0;
+        const std::size_t set_bytes = xyz_bytes + first_bytes + dist_bytes;
+        const int         sets      = rotation_sets(s.prop, set_bytes, batch);
+        timing.buffer_sets          = sets;
+        DeviceBuffer pool;
+        pool.reserve(set_bytes * sets);
+        char *const base = static_cast<char *>(pool.ptr);
+        auto        set  = [&](const int k) { return base + k * set_bytes; };
+
         const cudaStream_t st = s.streams[0];
-        PARTICULATE_CUDA_CHECK(cudaMemcpyAsync(s.xyz.ptr,
+        PARTICULATE_CUDA_CHECK(cudaMemcpyAsync(set(0),
                                                xyz,
                                                3 * n * sizeof(float),
                                                cudaMemcpyHostToDevice,
                                                st));
-        const SceneView view = s.upload_scene(scene);
+        for (int k = 1; k < sets; ++k)
+          PARTICULATE_CUDA_CHECK(cudaMemcpyAsync(set(k),
+                                                 set(0),
+                                                 3 * n * sizeof(float),
+                                                 cudaMemcpyDeviceToDevice,
+                                                 st));
+        const SceneView view = s.upload_scene(scene); // on streams[0], in order
+        auto            launch = [&](const int k) {
+          char *p = set(k);
+          launch_classify(view,
+                          reinterpret_cast<const float *>(p),
+                          n,
+                          reinterpret_cast<int *>(p + xyz_bytes),
+                          with_distance ? reinterpret_cast<float *>(
+                            p + xyz_bytes + first_bytes) :
+                                                     nullptr,
+                          st);
+        };
 
-        cudaEvent_t start, stop;
-        PARTICULATE_CUDA_CHECK(cudaEventCreate(&start));
-        PARTICULATE_CUDA_CHECK(cudaEventCreate(&stop));
+        EventPair ev;
+        // Method 1: one launch between two events; the fastest.
         double best = HUGE_VAL;
-        try
+        for (int r = -1; r < std::max(1, single_launches); ++r) // -1 warms up
           {
-            for (int r = -1; r < std::max(1, repetitions);
-                 ++r) // r = -1 warms up
-              {
-                PARTICULATE_CUDA_CHECK(cudaEventRecord(start, st));
-                launch_classify(view,
-                                static_cast<const float *>(s.xyz.ptr),
-                                n,
-                                static_cast<int *>(s.first.ptr),
-                                with_distance ?
-                                  static_cast<float *>(s.dist.ptr) :
-                                  nullptr,
-                                st);
-                PARTICULATE_CUDA_CHECK(cudaEventRecord(stop, st));
-                PARTICULATE_CUDA_CHECK(cudaEventSynchronize(stop));
-                float ms = 0.f;
-                PARTICULATE_CUDA_CHECK(cudaEventElapsedTime(&ms, start, stop));
-                if (r >= 0)
-                  best = std::min(best, static_cast<double>(ms));
-              }
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.start, st));
+            launch(0);
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.stop, st));
+            const double ms = ev.elapsed_ms();
+            if (r >= 0)
+              best = std::min(best, ms);
           }
-        catch (...)
+        timing.single_launch_ms = best;
+
+        // Method 2: `batch` launches back to back between two events,
+        // rotating over the working sets; the median over `batches`.
+        int c = 0;
+        for (int k = 0; k < sets; ++k) // warm-up pass
+          launch(c++ % sets);
+        std::vector<double> per_launch;
+        for (int r = 0; r < std::max(1, batches); ++r)
           {
-            cudaEventDestroy(start);
-            cudaEventDestroy(stop);
-            throw;
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.start, st));
+            for (int i = 0; i < std::max(1, batch); ++i)
+              launch(c++ % sets);
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.stop, st));
+            per_launch.push_back(ev.elapsed_ms() / std::max(1, batch));
           }
-        cudaEventDestroy(start);
-        cudaEventDestroy(stop);
-        return best;
+        timing.batched_ms = median(per_launch);
+
+        // Method 2 for io_only_kernel over the same working sets.
+        const unsigned blocks = static_cast<unsigned>(
+          (n + threads_per_block - 1) / threads_per_block);
+        auto io_launch = [&](const int k) {
+          char *p = set(k);
+          io_only_kernel<<<blocks, threads_per_block, 0, st>>>(
+            reinterpret_cast<const float *>(p),
+            static_cast<int>(n),
+            reinterpret_cast<int *>(p + xyz_bytes),
+            with_distance ?
+              reinterpret_cast<float *>(p + xyz_bytes + first_bytes) :
+              nullptr);
+          PARTICULATE_CUDA_CHECK(cudaGetLastError());
+        };
+        for (int k = 0; k < sets; ++k) // warm-up pass
+          io_launch(c++ % sets);
+        per_launch.clear();
+        for (int r = 0; r < std::max(1, batches); ++r)
+          {
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.start, st));
+            for (int i = 0; i < std::max(1, batch); ++i)
+              io_launch(c++ % sets);
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.stop, st));
+            per_launch.push_back(ev.elapsed_ms() / std::max(1, batch));
+          }
+        timing.io_only_ms = median(per_launch);
+        PARTICULATE_CUDA_CHECK(cudaStreamSynchronize(st));
+        return timing;
       }
 
       double
       CudaBackend::measure_copy_bandwidth(const std::size_t bytes)
       {
-        DeviceBuffer a, b;
-        a.reserve(bytes);
-        b.reserve(bytes);
-        const cudaStream_t st = state->streams[0];
-        PARTICULATE_CUDA_CHECK(cudaMemsetAsync(a.ptr, 1, bytes, st));
-        PARTICULATE_CUDA_CHECK(cudaMemcpyAsync(b.ptr,
-                                               a.ptr,
-                                               bytes,
-                                               cudaMemcpyDeviceToDevice,
-                                               st)); // warm-up
-        cudaEvent_t start, stop;
-        PARTICULATE_CUDA_CHECK(cudaEventCreate(&start));
-        PARTICULATE_CUDA_CHECK(cudaEventCreate(&stop));
-        const int reps = 10;
-        float     ms   = 0.f;
-        try
+        if (bytes == 0)
+          return 0.;
+        const std::size_t b     = align_up(bytes);
+        const int         pairs = rotation_sets(state->prop, 2 * b, 100);
+        DeviceBuffer      pool;
+        pool.reserve(2 * b * pairs);
+        char *const        base = static_cast<char *>(pool.ptr);
+        const cudaStream_t st   = state->streams[0];
+        PARTICULATE_CUDA_CHECK(cudaMemsetAsync(pool.ptr, 1, 2 * b * pairs, st));
+        // Copy c goes within pair c % pairs, in alternating directions.
+        auto copy = [&](const int c) {
+          char *a = base + 2 * b * (c % pairs), *d = a + b;
+          if ((c / pairs) % 2 == 1)
+            std::swap(a, d);
+          PARTICULATE_CUDA_CHECK(
+            cudaMemcpyAsync(d, a, bytes, cudaMemcpyDeviceToDevice, st));
+        };
+        // At least 10 copies and about 4 GB per batch.
+        const int copies = static_cast<int>(
+          std::max(10., std::ceil(4e9 / (2. * double(bytes)))));
+        int c = 0;
+        for (int k = 0; k < pairs; ++k) // warm-up pass
+          copy(c++);
+        EventPair           ev;
+        std::vector<double> ms;
+        for (int r = 0; r < 5; ++r)
           {
-            PARTICULATE_CUDA_CHECK(cudaEventRecord(start, st));
-            for (int r = 0; r < reps; ++r)
-              PARTICULATE_CUDA_CHECK(cudaMemcpyAsync((r % 2) ? a.ptr : b.ptr,
-                                                     (r % 2) ? b.ptr : a.ptr,
-                                                     bytes,
-                                                     cudaMemcpyDeviceToDevice,
-                                                     st));
-            PARTICULATE_CUDA_CHECK(cudaEventRecord(stop, st));
-            PARTICULATE_CUDA_CHECK(cudaEventSynchronize(stop));
-            PARTICULATE_CUDA_CHECK(cudaEventElapsedTime(&ms, start, stop));
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.start, st));
+            for (int i = 0; i < copies; ++i)
+              copy(c++);
+            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.stop, st));
+            ms.push_back(ev.elapsed_ms());
           }
-        catch (...)
-          {
-            cudaEventDestroy(start);
-            cudaEventDestroy(stop);
-            throw;
-          }
-        cudaEventDestroy(start);
-        cudaEventDestroy(stop);
+        PARTICULATE_CUDA_CHECK(cudaStreamSynchronize(st));
         // Bytes read plus bytes written, per second, in GB/s.
-        return 2. * double(bytes) * reps / (1e-3 * ms) / 1e9;
+        return 2. * double(bytes) * copies / (1e-3 * median(ms)) / 1e9;
       }
 
       void

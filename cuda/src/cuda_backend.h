@@ -4,6 +4,7 @@
 #ifndef particulate_cuda_src_cuda_backend_h
 #define particulate_cuda_src_cuda_backend_h
 
+#include <particulate/cuda/containment_engine.h>
 #include <particulate/cuda/detail/point_query.h>
 
 #include <cstddef>
@@ -61,12 +62,14 @@ namespace particulate {
                  float           *distance);
 
         /** See ContainmentEngine::time_kernel(). */
-        double
+        KernelTiming
         time_kernel(const SceneGrid &scene,
                     const float     *xyz,
                     std::size_t      n,
                     bool             with_distance,
-                    int              repetitions);
+                    int              single_launches,
+                    int              batch,
+                    int              batches);
 
         /** See ContainmentEngine::measure_copy_bandwidth(). */
         double

@@ -25,6 +25,22 @@ namespace particulate {
     const char *
     to_string(Backend backend);
 
+    /** Result of ContainmentEngine::time_kernel(), times in milliseconds. */
+    struct KernelTiming
+    {
+      /** Fastest of single launches, each timed alone by events. */
+      double single_launch_ms = 0.;
+      /** Median over batches of (batch of back-to-back launches) / batch. */
+      double batched_ms = 0.;
+      /**
+       * batched_ms of a kernel with the same launch, loads and stores but
+       * no classification (a trivial function of the point instead).
+       */
+      double io_only_ms = 0.;
+      /** Copies of points and outputs the batched launches rotate over. */
+      int buffer_sets = 0;
+    };
+
     /**
      * Point containment for many points against many rigid bodies, on the GPU
      * or on the CPU with the same arithmetic (thesis §5.4.3 and §6.8).
@@ -148,22 +164,40 @@ namespace particulate {
       unpin_host_memory(const void *ptr);
 
       /**
-       * Benchmark aid (CUDA path only): uploads the points once, then times
-       * `repetitions` launches of the classification kernel alone on all n
-       * points with CUDA events and returns the fastest, in milliseconds.
+       * Benchmark aid (CUDA path only): kernel time of one classification of
+       * all n points, which are uploaded first (no host copies timed). Two
+       * methods, both with CUDA events:
+       *
+       * - `single_launch_ms`: events around one launch, the fastest of
+       *   `single_launches` (after one warm-up). Includes the time from the
+       *   first event to the start of the kernel and from its end to the
+       *   second event (some microseconds), which is not kernel work.
+       * - `batched_ms`: events around `batch` launches back to back, divided
+       *   by `batch`; the median over `batches` such batches (after one
+       *   warm-up pass). The launches rotate over `buffer_sets` copies of
+       *   the points and outputs, as many as make their bytes at least four
+       *   times the device's L2 cache (at most `batch`), so that the points
+       *   come from device memory as they would in a time step, not from a
+       *   cache that the previous launch filled.
        */
-      double
+      KernelTiming
       time_kernel(const float        *xyz,
                   std::size_t         n,
                   const BodyInstance *bodies,
                   std::size_t         m,
                   bool                with_distance,
-                  int                 repetitions);
+                  int                 single_launches,
+                  int                 batch,
+                  int                 batches);
 
       /**
        * Benchmark aid (CUDA path only): device-to-device copy bandwidth in
-       * GB/s, counting bytes read plus bytes written, measured with
-       * cudaMemcpy of `bytes` bytes.
+       * GB/s, counting bytes read plus bytes written, with the batched
+       * method of time_kernel(): `cudaMemcpyAsync` of `bytes` bytes
+       * repeated back to back between two events (at least 10 copies and
+       * at least about 4 GB moved in all), rotating over enough buffer pairs
+       * that their bytes are at least four times the L2 cache; the median of
+       * 5 such batches.
        */
       double
       measure_copy_bandwidth(std::size_t bytes);

@@ -171,11 +171,36 @@ namespace particulate {
 #endif
       }
 
+      // Shape data (map samples, sphere entries, grid cells, body ids) is
+      // read through the non-coherent path with L1 priority evict-last: the
+      // points and results stream through with evict-first (.cs) accesses,
+      // and neighbouring points reuse what a point read here (measured
+      // 1-2 % faster with many bodies, otherwise no change).
+#if defined(__CUDA_ARCH__)
+      __device__ __forceinline__ int
+      load_keep(const int *p)
+      {
+        int v;
+        asm("ld.global.nc.L1::evict_last.s32 %0, [%1];" : "=r"(v) : "l"(p));
+        return v;
+      }
+
+      __device__ __forceinline__ float4
+      load_keep(const float4 *p)
+      {
+        float4 v;
+        asm("ld.global.nc.L1::evict_last.v4.f32 {%0, %1, %2, %3}, [%4];"
+            : "=f"(v.x), "=f"(v.y), "=f"(v.z), "=f"(v.w)
+            : "l"(p));
+        return v;
+      }
+#endif
+
       PARTICULATE_HD int
       load_ro(const int *p)
       {
 #if defined(__CUDA_ARCH__)
-        return __ldg(p);
+        return load_keep(p);
 #else
         return *p;
 #endif
@@ -185,7 +210,7 @@ namespace particulate {
       load_ro(const Quad *p)
       {
 #if defined(__CUDA_ARCH__)
-        const float4 v = __ldg(reinterpret_cast<const float4 *>(p));
+        const float4 v = load_keep(reinterpret_cast<const float4 *>(p));
         return Quad{v.x, v.y, v.z, v.w};
 #else
         return *p;
@@ -196,7 +221,7 @@ namespace particulate {
       load_ro(const SphereEntry *p)
       {
 #if defined(__CUDA_ARCH__)
-        const float4 v = __ldg(reinterpret_cast<const float4 *>(p));
+        const float4 v = load_keep(reinterpret_cast<const float4 *>(p));
         return SphereEntry{v.x, v.y, v.z, v.w};
 #else
         return *p;
@@ -306,10 +331,27 @@ namespace particulate {
         return true;
       }
 
+      /** Whether a body-frame point lies in (or on) one sphere entry. */
+      PARTICULATE_HD bool
+      sphere_contains(const SphereEntry &e,
+                      const float        bx,
+                      const float        by,
+                      const float        bz)
+      {
+        const float dx = fsub(bx, e.x);
+        const float dy = fsub(by, e.y);
+        const float dz = fsub(bz, e.z);
+        return fadd(fadd(fmul(dx, dx), fmul(dy, dy)), fmul(dz, dz)) <= e.r2;
+      }
+
       /**
        * Whether a body-frame point lies in (or on) one of the inner spheres:
        * only the spheres listed in the point's grid cell are tested, so the
-       * work per point does not grow with the number of spheres.
+       * work per point does not grow with the number of spheres. Two
+       * entries per step, both loaded before either is tested, so that one
+       * memory latency serves two spheres (measured 9 % faster on an H200
+       * than one per step; four per step cost registers and were slower).
+       * The answer does not depend on the order of the tests.
        */
       PARTICULATE_HD bool
       spheres_contain(const ShapeView &s,
@@ -325,18 +367,19 @@ namespace particulate {
         const int c     = i + s.n[0] * (j + s.n[1] * k);
         const int begin = load_ro(s.cell_start + c);
         const int end   = load_ro(s.cell_start + c + 1);
-        for (int q = begin; q < end; ++q)
+        int       q     = begin;
+        for (; q + 1 < end; q += 2)
           {
-            const SphereEntry e  = load_ro(s.entries + q);
-            const float       dx = fsub(bx, e.x);
-            const float       dy = fsub(by, e.y);
-            const float       dz = fsub(bz, e.z);
-            const float       d2
-              = fadd(fadd(fmul(dx, dx), fmul(dy, dy)), fmul(dz, dz));
-            if (d2 <= e.r2)
+            const SphereEntry e0 = load_ro(s.entries + q);
+            const SphereEntry e1 = load_ro(s.entries + q + 1);
+            // Both tests before the branch (`|`, not `||`), or the compiler
+            // may move the second load behind the first test.
+            const bool in0 = sphere_contains(e0, bx, by, bz);
+            const bool in1 = sphere_contains(e1, bx, by, bz);
+            if (in0 | in1)
               return true;
           }
-        return false;
+        return q < end && sphere_contains(load_ro(s.entries + q), bx, by, bz);
       }
 
       /**
