@@ -28,6 +28,9 @@ namespace particulate {
         std::vector<unsigned long long>      sizes;
         std::vector<types::global_dof_index> pressure;
         std::vector<unsigned long long>      shared; // dof, set, dof, set...
+        /// every owned cell's set and constant pressure DoF (kept here)
+        std::vector<std::pair<unsigned int, types::global_dof_index>>
+          cell_constants;
 
         /** What the root needs: the sizes, then the shared pairs. */
         std::vector<unsigned long long>
@@ -132,6 +135,7 @@ namespace particulate {
         for (const auto &[i, pressure] : cell_sets)
           {
             const unsigned int n = set_number(i);
+            local.cell_constants.emplace_back(n, pressure);
             if (std::binary_search(decoupled.begin(),
                                    decoupled.end(),
                                    pressure))
@@ -154,10 +158,19 @@ namespace particulate {
         return local;
       }
 
+      /** What a rank's set is part of. */
+      enum SetRole : char
+      {
+        flow,
+        /// the set of a pocket whose pressure is decoupled
+        pocket_representative,
+        pocket
+      };
+
       /**
        * On the root: the sets of all ranks joined through their shared
-       * DoFs. Returns, per rank and set, whether that set's pressure is to
-       * be decoupled: one set of every pocket.
+       * DoFs. Returns, per rank and set, its role: in the flow, or in a
+       * pocket, one set of which decouples a pressure.
        */
       std::vector<std::vector<char>>
       join_across_ranks(const std::vector<LocalSets> &ranks)
@@ -184,19 +197,21 @@ namespace particulate {
               += ranks[r].sizes[n];
         const auto largest = std::max_element(size.begin(), size.end());
 
-        std::vector<std::vector<char>> pin(ranks.size());
+        std::vector<std::vector<char>> role(ranks.size());
         for (unsigned int r = 0; r < ranks.size(); ++r)
           {
-            pin[r].assign(ranks[r].sizes.size(), 0);
+            role[r].assign(ranks[r].sizes.size(), pocket);
             for (unsigned int n = 0; n < ranks[r].sizes.size(); ++n)
               {
-                // at the representative of every set but the largest
-                const std::size_t i = offset[r] + n;
-                pin[r][n]
-                  = sets.find_set(i) == i && size.begin() + i != largest;
+                const std::size_t i    = offset[r] + n;
+                const std::size_t root = sets.find_set(i);
+                if (size.begin() + root == largest)
+                  role[r][n] = flow;
+                else if (root == i)
+                  role[r][n] = pocket_representative;
               }
           }
-        return pin;
+        return role;
       }
     } // namespace
 
@@ -214,22 +229,28 @@ namespace particulate {
       const auto gathered
         = Utilities::MPI::gather(communicator, local.packed(), 0);
       EnclosedFluid                  found;
-      std::vector<std::vector<char>> pin;
+      std::vector<std::vector<char>> role;
       if (Utilities::MPI::this_mpi_process(communicator) == 0)
         {
           std::vector<LocalSets> all;
           for (const auto &packed : gathered)
             all.push_back(LocalSets::unpacked(packed));
-          pin = join_across_ranks(all);
+          role = join_across_ranks(all);
         }
-      pin = Utilities::MPI::broadcast(communicator, pin, 0);
-      for (const auto &rank : pin)
-        found.n_pockets += std::count(rank.begin(), rank.end(), 1);
-      const auto &mine = pin[Utilities::MPI::this_mpi_process(communicator)];
+      role = Utilities::MPI::broadcast(communicator, role, 0);
+      for (const auto &rank : role)
+        found.n_pockets
+          += std::count(rank.begin(), rank.end(), pocket_representative);
+      const auto &mine = role[Utilities::MPI::this_mpi_process(communicator)];
       for (unsigned int n = 0; n < mine.size(); ++n)
-        if (mine[n] && local.pressure[n] != numbers::invalid_dof_index)
+        if (mine[n] == pocket_representative
+            && local.pressure[n] != numbers::invalid_dof_index)
           found.pinned_pressures.push_back(local.pressure[n]);
+      for (const auto &[n, constant] : local.cell_constants)
+        if (mine[n] == flow)
+          found.flow_constants.push_back(constant);
       std::sort(found.pinned_pressures.begin(), found.pinned_pressures.end());
+      std::sort(found.flow_constants.begin(), found.flow_constants.end());
       return found;
     }
 

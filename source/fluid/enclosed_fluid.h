@@ -20,6 +20,9 @@ namespace particulate {
       unsigned int n_pockets = 0;
       /// locally owned pressure DoFs to decouple, one per pocket (sorted)
       std::vector<dealii::types::global_dof_index> pinned_pressures;
+      /// the constant pressure DoFs of the locally owned cells of the flow,
+      /// the largest set (sorted)
+      std::vector<dealii::types::global_dof_index> flow_constants;
     };
 
     /**

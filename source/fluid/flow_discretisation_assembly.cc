@@ -419,7 +419,10 @@ namespace particulate {
       if (assemble_matrix)
         system_matrix.compress(VectorOperation::add);
       if (assemble_residual)
-        system_rhs.compress(VectorOperation::add);
+        {
+          system_rhs.compress(VectorOperation::add);
+          remove_net_flux_from_residual();
+        }
     }
 
 
@@ -579,6 +582,32 @@ namespace particulate {
         system_rhs(dof) = 0.;
       for (const auto dof : decoupled_pressure_dofs)
         system_rhs(dof) = 0.;
+      system_rhs.compress(VectorOperation::insert);
+      remove_net_flux_from_residual();
+    }
+
+
+
+    template <int dim>
+    void
+    FlowDiscretisation<dim>::remove_net_flux_from_residual()
+    {
+      if (parameters.boundary_conditions.pressure_is_determined())
+        return;
+      // the orthogonal projection: the smallest change that leaves a
+      // residual the Newton update can remove
+      double along[2] = {0., 0.}; // z . R, z . z
+      for (const auto &[dof, z] : enclosed_pressure_mode)
+        {
+          along[0] += z * system_rhs(dof);
+          along[1] += z * z;
+        }
+      Utilities::MPI::sum(along, communicator, along);
+      if (along[1] == 0.)
+        return;
+      const double share = along[0] / along[1];
+      for (const auto &[dof, z] : enclosed_pressure_mode)
+        system_rhs(dof) -= share * z;
       system_rhs.compress(VectorOperation::insert);
     }
 

@@ -16,6 +16,7 @@
 #include <set>
 
 #include "enclosed_fluid.h"
+#include "flow_pressure_mode.h"
 #include "momentum_operator.h"
 #include "undetermined_pressures.h"
 
@@ -251,11 +252,12 @@ namespace particulate {
                                        != decoupled_pressures_searched_for,
                                      communicator))
         {
-          decoupled_pressure_dofs
+          UndeterminedPressures undetermined
             = find_undetermined_pressure_dofs(dof_handler,
                                               mapping,
                                               zero_constraints,
                                               prescribed);
+          decoupled_pressure_dofs = std::move(undetermined.decoupled);
           // fluid the bodies wall off from the flow (none without them)
           TimerOutput::Scope scope(timer, "fluid: enclosed fluid search");
           const bool         any_prescribed
@@ -275,6 +277,12 @@ namespace particulate {
                          std::back_inserter(merged));
           decoupled_pressure_dofs          = std::move(merged);
           decoupled_pressures_searched_for = std::move(prescribed);
+          enclosed_pressure_mode.clear();
+          if (constant_pressure_is_null)
+            enclosed_pressure_mode
+              = enclosed_flow_pressure_mode(enclosed_fluid.flow_constants,
+                                            undetermined.patches,
+                                            decoupled_pressure_dofs);
         }
     }
 
@@ -372,6 +380,14 @@ namespace particulate {
         pressure_mass.reinit(sp);
       }
       assemble_geometric_matrices();
+      constant_pressure_is_null
+        = !parameters.boundary_conditions.pressure_is_determined()
+          && constant_pressure_is_null_mode(dof_handler,
+                                            mapping,
+                                            zero_constraints,
+                                            owned_partitioning[0],
+                                            locally_relevant_dofs,
+                                            communicator);
     }
 
 

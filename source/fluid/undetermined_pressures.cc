@@ -66,7 +66,7 @@ namespace particulate {
 
 
     template <int dim>
-    std::vector<types::global_dof_index>
+    UndeterminedPressures
     find_undetermined_pressure_dofs(
       const DoFHandler<dim>                      &dof_handler,
       const Mapping<dim>                         &mapping,
@@ -74,8 +74,9 @@ namespace particulate {
       const std::vector<types::global_dof_index> &prescribed_dofs)
     {
       std::set<types::global_dof_index> pinned;
+      UndeterminedPressures             found;
       if (prescribed_dofs.empty())
-        return {};
+        return found;
 
       const auto               &fe = dof_handler.get_fe();
       const QGauss<dim>         quadrature(fe.degree + 1);
@@ -233,21 +234,24 @@ namespace particulate {
           for (unsigned int k = 0; k < rows.size(); ++k)
             for (unsigned int l = rank; l < rows.size(); ++l)
               null_basis(k, l - rank) = u(k, l);
-          for (const unsigned int row : pivot_rows(null_basis))
+          PatchNullModes modes{rows, null_basis, pivot_rows(null_basis)};
+          for (const unsigned int row : modes.pinned)
             pinned.insert(rows[row]);
+          found.patches.push_back(std::move(modes));
         }
-      return {pinned.begin(), pinned.end()};
+      found.decoupled.assign(pinned.begin(), pinned.end());
+      return found;
     }
 
 
 
-    template std::vector<types::global_dof_index>
+    template UndeterminedPressures
     find_undetermined_pressure_dofs<2>(
       const DoFHandler<2> &,
       const Mapping<2> &,
       const AffineConstraints<double> &,
       const std::vector<types::global_dof_index> &);
-    template std::vector<types::global_dof_index>
+    template UndeterminedPressures
     find_undetermined_pressure_dofs<3>(
       const DoFHandler<3> &,
       const Mapping<3> &,

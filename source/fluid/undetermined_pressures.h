@@ -9,6 +9,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <vector>
 
@@ -24,8 +25,30 @@ namespace particulate {
       return entries != nullptr && entries->empty();
     }
 
+    /** The null modes one patch of cells next to a body contributes. */
+    struct PatchNullModes
+    {
+      /// pressure DoFs of the patch not decoupled before it
+      std::vector<dealii::types::global_dof_index> rows;
+      /// rows x modes: columns spanning the patch's null modes
+      dealii::FullMatrix<double> basis;
+      /// the positions in `rows` decoupled for them, one per mode
+      std::vector<unsigned int> pinned;
+    };
+
+    /** What find_undetermined_pressure_dofs() found. */
+    struct UndeterminedPressures
+    {
+      /// locally owned pressure DoFs to decouple (sorted)
+      std::vector<dealii::types::global_dof_index> decoupled;
+      /// the patches' null modes in the order they were found; each is
+      /// zero on the DoFs decoupled before it
+      std::vector<PatchNullModes> patches;
+    };
+
     /**
-     * Pressure DoFs (locally owned, sorted) to decouple from the flow.
+     * Pressure DoFs (locally owned, sorted) to decouple from the flow, and
+     * the null modes they stand for.
      *
      * A P1disc pressure q of one cell enters the equations only through
      * (q, div v) for the velocity test functions v of that cell. When
@@ -50,10 +73,11 @@ namespace particulate {
      * setting the chosen ones to zero removes the null space without
      * removing an equation. Patches are taken one after another, each
      * without the DoFs pinned before. Modes across partition boundaries are
-     * not searched for.
+     * not searched for. The cells without a free velocity are decoupled
+     * whole and give no patch: their divergence block is empty.
      */
     template <int dim>
-    std::vector<dealii::types::global_dof_index>
+    UndeterminedPressures
     find_undetermined_pressure_dofs(
       const dealii::DoFHandler<dim>                      &dof_handler,
       const dealii::Mapping<dim>                         &mapping,

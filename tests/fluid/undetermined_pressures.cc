@@ -70,7 +70,8 @@ namespace {
     for (const auto dof : fluid::find_undetermined_pressure_dofs(dof_handler,
                                                                  mapping,
                                                                  constraints,
-                                                                 prescribed))
+                                                                 prescribed)
+                            .decoupled)
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         if (dofs[i] == dof)
           modes.push_back(fe.system_to_component_index(i).second);

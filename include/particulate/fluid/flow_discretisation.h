@@ -349,6 +349,12 @@ namespace particulate {
        *  FEValues loop (the nonlinear form, B^T p and B u). */
       void
       assemble_residual_matrix_free(const Stage &stage);
+      /** Enclosed flow: removes from the continuity rows of system_rhs
+       *  their part along the pressure mode no equation determines (the
+       *  net flux the fixed velocities carry into the flow), which no
+       *  Newton update could remove. */
+      void
+      remove_net_flux_from_residual();
 
       const FluidParameters &parameters;
       MPI_Comm               communicator;
@@ -385,6 +391,15 @@ namespace particulate {
       /// pockets of fluid walled off from the flow by the constraints,
       /// among them one decoupled pressure each (find_enclosed_fluid)
       unsigned int enclosed_pockets = 0;
+      /// enclosed flow: whether the constant pressure is a null vector of
+      /// the divergence on this mesh (not on curved cells, see
+      /// constant_pressure_is_null_mode)
+      bool constant_pressure_is_null = false;
+      /// enclosed flow with bodies where it is: the exact null mode of the
+      /// continuity rows, (DoF, value) of owned pressures
+      /// (enclosed_flow_pressure_mode)
+      std::vector<std::pair<dealii::types::global_dof_index, double>>
+        enclosed_pressure_mode;
       /// the covered velocity DoFs that search was made for (a list that
       /// matches none after new DoFs or a moved mesh)
       std::vector<dealii::types::global_dof_index>
