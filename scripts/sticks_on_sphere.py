@@ -3,13 +3,15 @@
 
     scripts/sticks_on_sphere.py RUN_DIR --sphere X Y Z R --reach L
         [--series FILE] [--figure FILE] [--series-every N]
+        [--check-end T --max-penetration D] [--label NAME]
 
 reads the run's particle_set.csv, the free particles' particle_<i>.dat and
 flow.dat, and prints per output row and at the end how many sticks lie on
 the sphere (centre closer to the sphere's centre than R + L, L the stick's
 half length plus its radius, and above the sphere's centre height minus R),
 how many have fallen past it, the largest speed and the deepest overlap
-(flow.dat's max_penetration).
+(flow.dat's max_penetration). With --check-end and --max-penetration it
+exits 1 unless the run reached t = T and no overlap was ever deeper than D.
 
     scripts/sticks_on_sphere.py --redraw SERIES FIGURE
 
@@ -61,6 +63,11 @@ def main():
     parser.add_argument("--series")
     parser.add_argument("--series-every", type=int, default=10)
     parser.add_argument("--figure")
+    parser.add_argument("--label", default="",
+                        help="the run's name (ignored; the test runner "
+                        "passes it)")
+    parser.add_argument("--check-end", type=float)
+    parser.add_argument("--max-penetration", type=float)
     args = parser.parse_args()
     centre, radius = np.array(args.sphere[:3]), args.sphere[3]
 
@@ -90,7 +97,18 @@ def main():
         write_table(args.series, header, table, args.series_every)
     if args.figure:
         draw(args.figure, header, table)
+    failed = []
+    if args.check_end is not None and table[-1, 0] < args.check_end - 1e-9:
+        failed.append("the run ends at t = %g s, before %g s"
+                      % (table[-1, 0], args.check_end))
+    if (args.max_penetration is not None
+            and table[:, 4].max() > args.max_penetration):
+        failed.append("an overlap of %.3g mm exceeds %.3g mm"
+                      % (1e3 * table[:, 4].max(), 1e3 * args.max_penetration))
+    for message in failed:
+        print("FAIL: " + message)
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
-    main()
+    raise SystemExit(main())
