@@ -81,6 +81,19 @@ namespace {
   struct Launches
   {
     int single = 20, batch = 100, batches = 5;
+
+    /** engine.time_kernel() with these counts. */
+    KernelTiming
+    time(ContainmentEngine  &engine,
+         const float        *xyz,
+         const std::size_t   n,
+         const BodyInstance *bodies,
+         const std::size_t   m,
+         const bool          with_distance) const
+    {
+      return engine
+        .time_kernel(xyz, n, bodies, m, with_distance, single, batch, batches);
+    }
   };
 
   struct Scene
@@ -199,14 +212,12 @@ namespace {
               {
                 if (gpu != nullptr)
                   {
-                    const KernelTiming kt = gpu->time_kernel(xyz.data(),
-                                                             n,
-                                                             all.data(),
-                                                             m,
-                                                             false,
-                                                             launches.single,
-                                                             launches.batch,
-                                                             launches.batches);
+                    const KernelTiming kt = launches.time(*gpu,
+                                                          xyz.data(),
+                                                          n,
+                                                          all.data(),
+                                                          m,
+                                                          false);
                     std::printf(
                       "mesh bodies x%d %d^3: kernel %.4f ms (1 launch %.4f ms)\n",
                       m,
@@ -228,7 +239,7 @@ namespace {
                 std::fill(f_gpu.begin(),
                           f_gpu.end(),
                           -2); // every flag is written
-                r.e2e_ms              = median_ms(20, [&] {
+                r.e2e_ms = median_ms(20, [&] {
                   gpu->classify(xyz.data(),
                                 n,
                                 all.data(),
@@ -236,16 +247,10 @@ namespace {
                                 f_gpu.data(),
                                 nullptr);
                 });
-                const KernelTiming kt = gpu->time_kernel(xyz.data(),
-                                                         n,
-                                                         all.data(),
-                                                         m,
-                                                         false,
-                                                         launches.single,
-                                                         launches.batch,
-                                                         launches.batches);
-                r.kernel_ms           = kt.batched_ms;
-                r.single_ms           = kt.single_launch_ms;
+                const KernelTiming kt
+                  = launches.time(*gpu, xyz.data(), n, all.data(), m, false);
+                r.kernel_ms = kt.batched_ms;
+                r.single_ms = kt.single_launch_ms;
                 for (std::size_t p = 0; p < n; ++p)
                   r.flag_diffs += f_gpu[p] != f_cpu[p];
               }
@@ -493,14 +498,12 @@ main(int argc, char **argv)
                                 f_gpu.data(),
                                 dg);
                 });
-                const KernelTiming kt = gpu->time_kernel(xyz.data(),
-                                                         n,
-                                                         sc.bodies.data(),
-                                                         sc.bodies.size(),
-                                                         sc.maps,
-                                                         launches.single,
-                                                         launches.batch,
-                                                         launches.batches);
+                const KernelTiming kt = launches.time(*gpu,
+                                                      xyz.data(),
+                                                      n,
+                                                      sc.bodies.data(),
+                                                      sc.bodies.size(),
+                                                      sc.maps);
                 r.kernel_ms           = kt.batched_ms;
                 r.single_ms           = kt.single_launch_ms;
                 r.sets                = kt.buffer_sets;

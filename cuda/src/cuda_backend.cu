@@ -557,19 +557,22 @@ namespace particulate {
 
         // Method 2: `batch` launches back to back between two events,
         // rotating over the working sets; the median over `batches`.
-        int c = 0;
-        for (int k = 0; k < sets; ++k) // warm-up pass
-          launch(c++ % sets);
-        std::vector<double> per_launch;
-        for (int r = 0; r < std::max(1, batches); ++r)
-          {
-            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.start, st));
-            for (int i = 0; i < std::max(1, batch); ++i)
-              launch(c++ % sets);
-            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.stop, st));
-            per_launch.push_back(ev.elapsed_ms() / std::max(1, batch));
-          }
-        timing.batched_ms = median(per_launch);
+        int  c       = 0;
+        auto batched = [&](const auto &launch_on_set) {
+          for (int k = 0; k < sets; ++k) // warm-up pass
+            launch_on_set(c++ % sets);
+          std::vector<double> per_launch;
+          for (int r = 0; r < std::max(1, batches); ++r)
+            {
+              PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.start, st));
+              for (int i = 0; i < std::max(1, batch); ++i)
+                launch_on_set(c++ % sets);
+              PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.stop, st));
+              per_launch.push_back(ev.elapsed_ms() / std::max(1, batch));
+            }
+          return median(per_launch);
+        };
+        timing.batched_ms = batched(launch);
 
         // Method 2 for io_only_kernel over the same working sets.
         const unsigned blocks = static_cast<unsigned>(
@@ -585,18 +588,7 @@ namespace particulate {
               nullptr);
           PARTICULATE_CUDA_CHECK(cudaGetLastError());
         };
-        for (int k = 0; k < sets; ++k) // warm-up pass
-          io_launch(c++ % sets);
-        per_launch.clear();
-        for (int r = 0; r < std::max(1, batches); ++r)
-          {
-            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.start, st));
-            for (int i = 0; i < std::max(1, batch); ++i)
-              io_launch(c++ % sets);
-            PARTICULATE_CUDA_CHECK(cudaEventRecord(ev.stop, st));
-            per_launch.push_back(ev.elapsed_ms() / std::max(1, batch));
-          }
-        timing.io_only_ms = median(per_launch);
+        timing.io_only_ms = batched(io_launch);
         PARTICULATE_CUDA_CHECK(cudaStreamSynchronize(st));
         return timing;
       }
