@@ -36,8 +36,8 @@ namespace particulate {
                 << ", spans " << fewest << " (size " << sizes[worst]
                 << " m, cell " << cell_sizes[worst]
                 << " m at its centre). The fictitious boundary resolves them "
-                   "coarsely: the drag of a fixed cylinder is 2.6 % low at 4 "
-                   "cells per diameter and within 1.3 % from 8 on "
+                   "coarsely: the drag of a fixed cylinder is 2.7 % low at 4 "
+                   "cells per diameter and within 1.4 % from 8 on "
                    "(doc/validation/dfg-2d-1-fbm.md). Refine the mesh around "
                    "the particles "
                    "('Refinements' in subsection 'Mesh', or subsection "
