@@ -461,27 +461,21 @@ main(int argc, char **argv)
             float             *dc = sc.maps ? d_cpu.data() : nullptr;
             float             *dg = sc.maps ? d_gpu.data() : nullptr;
             Row                r{};
-            r.scene            = sc.name;
-            r.n1               = n1;
-            r.n                = n;
-            const int cpu_reps = kernel_only ? 0 : n1 >= 97 ? 3 : 5;
-            if (!kernel_only)
-              r.cpu1_ms = median_ms(cpu_reps, [&] {
-                cpu1.classify(xyz.data(),
+            r.scene                = sc.name;
+            r.n1                   = n1;
+            r.n                    = n;
+            const int  cpu_reps    = kernel_only ? 0 : n1 >= 97 ? 3 : 5;
+            const auto classify_on = [&](ContainmentEngine &engine) {
+              engine.classify(xyz.data(),
                               n,
                               sc.bodies.data(),
                               sc.bodies.size(),
                               f_cpu.data(),
                               dc);
-              });
-            r.cpuall_ms = median_ms(cpu_reps, [&] {
-              cpu_all.classify(xyz.data(),
-                               n,
-                               sc.bodies.data(),
-                               sc.bodies.size(),
-                               f_cpu.data(),
-                               dc);
-            });
+            };
+            if (!kernel_only)
+              r.cpu1_ms = median_ms(cpu_reps, [&] { classify_on(cpu1); });
+            r.cpuall_ms = median_ms(cpu_reps, [&] { classify_on(cpu_all); });
             r.inside    = std::count_if(f_cpu.begin(), f_cpu.end(), [](int f) {
               return f >= 0;
             });

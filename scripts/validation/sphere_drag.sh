@@ -20,18 +20,11 @@ case="$1"; shift
 name=$(basename "$case" .prm)
 [[ "$name" == fixed-sphere* || "$name" == moving-sphere* ]] \
   || { echo "$case: the name must start with fixed-sphere or moving-sphere" >&2; exit 1; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+gmg='subsection Linear solver\n  set Velocity preconditioner = geometric multigrid\n  set Velocity operator = matrix-free\nend\n'
 for level in "$@"; do
-  out="output/${name}-r${level}"
-  mkdir -p "$out"
-  # the copy stays next to the original, so that its relative paths hold
-  copy="$(dirname "$case")/_validation_${name}-r${level}.prm"
-  sed -e "s/^\( *set Refinements *=\).*/\1 ${level}/" \
-      -e "s#^\( *set Directory *=\).*#\1 ${out}#" "$case" > "$copy"
-  if (( level >= 1 )); then
-    printf 'subsection Linear solver\n  set Velocity preconditioner = geometric multigrid\n  set Velocity operator = matrix-free\nend\n' >> "$copy"
-  fi
-  mpirun -np 2 build/particulate "$copy" | tee "$out/run.log"
-  mv "$copy" "$out/case.prm"
+  extra=
+  (( level >= 1 )) && extra="$gmg"
+  scripts/validation/run_case_at_level.sh "$case" "$level" \
+    "output/${name}-r${level}" "$extra"
 done
 /usr/bin/python3 scripts/validation/sphere_drag.py output/fixed-sphere*-r* output/moving-sphere*-r*

@@ -15,22 +15,14 @@ cd "$(dirname "$0")/../.."
 case_name="$1"; shift
 base="prm/ten-cate/ten-cate-${case_name}.prm"
 [[ -f "$base" ]] || { echo "no case file $base" >&2; exit 1; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 folders=(); labels=()
 for level in "$@"; do
   out="output/ten-cate-${case_name}-r${level}${COVERED_NODES:+-$COVERED_NODES}${TAG:+-$TAG}"
-  mkdir -p "$out"
-  # the case file with another 'Refinements' and output folder
-  sed -e "s/^\( *set Refinements *=\).*/\1 ${level}/" \
-      -e "s#^\( *set Directory *=\).*#\1 ${out}#" "$base" > "$out/case.prm"
+  extra="${EXTRA_PRM:-}"
   if [[ -n "${COVERED_NODES:-}" ]]; then
-    printf 'subsection Particles\n  set Covered nodes = %s\nend\n' \
-      "$COVERED_NODES" >> "$out/case.prm"
+    extra="subsection Particles\n  set Covered nodes = ${COVERED_NODES}\nend\n${extra}"
   fi
-  if [[ -n "${EXTRA_PRM:-}" ]]; then
-    printf '%b' "$EXTRA_PRM" >> "$out/case.prm"
-  fi
-  mpirun -np 2 build/particulate "$out/case.prm" | tee "$out/run.log" || true
+  scripts/validation/run_case_at_level.sh "$base" "$level" "$out" "$extra" || true
   folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}${TAG:+, $TAG}")
 done
 /usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}" \

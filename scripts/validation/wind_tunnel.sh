@@ -10,15 +10,8 @@ cd "$(dirname "$0")/../.."
 name="$1"; shift
 case="prm/wind-tunnel/${name}.prm"
 [[ -f "$case" ]] || { echo "no case file $case" >&2; exit 1; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 for level in "$@"; do
-  out="output/wind-tunnel-${name}-r${level}"
-  mkdir -p "$out"
-  # the copy stays next to the original, so that its relative paths hold
-  copy="$(dirname "$case")/_validation_${name}-r${level}.prm"
-  sed -e "s/^\( *set Refinements *=\).*/\1 ${level}/" \
-      -e "s#^\( *set Directory *=\).*#\1 ${out}#" "$case" > "$copy"
-  mpirun -np 2 build/particulate "$copy" | tee "$out/run.log"
-  mv "$copy" "$out/case.prm"
+  scripts/validation/run_case_at_level.sh "$case" "$level" \
+    "output/wind-tunnel-${name}-r${level}"
 done
 /usr/bin/python3 scripts/validation/wind_tunnel.py output/wind-tunnel-*-r*
