@@ -187,19 +187,25 @@ namespace particulate {
                       const std::vector<OccupiedBall> &occupied) const
     {
       const unsigned int n = n_particles(shape, dim);
-      const double       r = placement_radius(shape, dim);
+      // a ball grown by half the clearance keeps that gap to every other
+      // grown ball; it keeps a whole clearance to the box
+      const double r      = placement_radius(shape, dim) + 0.5 * clearance;
+      const double margin = r + 0.5 * clearance;
       if (n == 0)
         throw std::runtime_error(
           "the solid fraction gives no particle of this shape in the "
           "region; raise 'Solid fraction' or enlarge the region.");
       for (unsigned int d = 0; d < dim; ++d)
-        if (!(upper[d] - lower[d] > 2. * r))
-          throw std::runtime_error(std::string("the region is narrower along ")
-                                   + "xyz"[d] + " than a particle ("
-                                   + std::to_string(2. * r)
-                                   + " m across however it turns).");
+        if (!(upper[d] - lower[d] > 2. * margin))
+          throw std::runtime_error(
+            std::string("the region is narrower along ") + "xyz"[d]
+            + " than a particle with its clearance ("
+            + std::to_string(2. * margin) + " m across however it turns).");
+      std::vector<OccupiedBall> grown = occupied;
+      for (auto &b : grown)
+        b.radius += 0.5 * clearance;
       UniformNumbers              uniform(seed);
-      BallGrid                    grid(occupied, r);
+      BallGrid                    grid(grown, r);
       std::vector<geometry::Pose> poses;
       const unsigned long         max_tries = 1000ul * n;
       for (unsigned long tries = 0; poses.size() < n && tries < max_tries;
@@ -207,8 +213,8 @@ namespace particulate {
         {
           OccupiedBall ball{Eigen::Vector3d::Zero(), r};
           for (unsigned int d = 0; d < dim; ++d)
-            ball.centre[d]
-              = lower[d] + r + (upper[d] - lower[d] - 2. * r) * uniform();
+            ball.centre[d] = lower[d] + margin
+                             + (upper[d] - lower[d] - 2. * margin) * uniform();
           const Eigen::Quaterniond q
             = random_orientation ? random_rotation(uniform, dim) : orientation;
           if (grid.overlaps(ball, dim))
@@ -221,8 +227,8 @@ namespace particulate {
           "placed " + std::to_string(poses.size()) + " of " + std::to_string(n)
           + " particles in 1000 tries each: random sequential placement "
             "jams near a solid fraction of 0.38 (3D) or 0.55 (2D) of the "
-            "balls that hold the particles. Lower 'Solid fraction', enlarge "
-            "the region or use a 'Lattice'.");
+            "balls that hold the particles. Lower 'Solid fraction' or "
+            "'Clearance', enlarge the region or use a 'Lattice'.");
       return poses;
     }
   } // namespace fbm

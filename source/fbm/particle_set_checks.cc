@@ -236,9 +236,10 @@ namespace particulate {
                     << clearance
                     << " m that the rigid engine keeps between surfaces: "
                        "it would push them apart in the first step. "
-                       "Space them at least that far apart, or set a "
-                       "smaller 'Contact distance' in subsection "
-                       "'Particles' (a finer mesh lowers 'auto').";
+                       "Space them at least that far apart (a random "
+                       "fill: its 'Clearance'), or set a smaller 'Contact "
+                       "distance' in subsection 'Particles' (a finer mesh "
+                       "lowers 'auto').";
             throw std::runtime_error(message.str());
           }
       };

@@ -347,6 +347,15 @@ namespace particulate {
                           Patterns::Integer(0),
                           "Seed of the random numbers: the same seed gives "
                           "the same particles on every machine.");
+        prm.declare_entry("Clearance",
+                          "0",
+                          Patterns::Double(0.),
+                          "Smallest gap [m] the fill leaves between its "
+                          "particles, and between them, the particles placed "
+                          "before it and the faces of its box (measured "
+                          "between the balls that hold the particles). A run "
+                          "refuses particles that start closer than "
+                          "'Contact distance': give at least that.");
         prm.declare_entry("Random orientation",
                           "false",
                           Patterns::Bool(),
@@ -375,6 +384,7 @@ namespace particulate {
                                            place("Upper corner"));
         fill.solid_fraction     = prm.get_double("Solid fraction");
         fill.seed               = prm.get_integer("Seed");
+        fill.clearance          = prm.get_double("Clearance");
         fill.random_orientation = prm.get_bool("Random orientation");
         const Eigen::Quaterniond q
           = shape.body_orientation(read_orientation(prm, dim, place));

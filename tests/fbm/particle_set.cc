@@ -11,8 +11,10 @@
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/sphere.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 
 #include "../fluid/test_utilities.h"
@@ -162,6 +164,26 @@ namespace {
     checker.check(same && different,
                   "random fill: the same seed, the same balls; another "
                   "seed, others");
+    // a clearance: every pair of balls and every ball and face of the box
+    // keep it (all pairs, independent of the fill's grid)
+    fill.clearance    = 0.02;
+    const auto spaced = fill.place(ball, 3, Eigen::Quaterniond::Identity(), {});
+    double     closest = std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < spaced.size(); ++i)
+      {
+        const Eigen::Vector3d x = spaced[i].translation();
+        closest
+          = std::min({closest, x.minCoeff() - 0.05, 1. - 0.05 - x.maxCoeff()});
+        for (unsigned int j = 0; j < i; ++j)
+          closest
+            = std::min(closest, (x - spaced[j].translation()).norm() - 0.1);
+      }
+    std::cout << "random fill with clearance 0.02: closest gap " << closest
+              << std::endl;
+    checker.check(spaced.size() == 191 && closest >= 0.02 * (1. - 1e-12),
+                  "random fill: 191 balls, none closer than the clearance "
+                  "0.02 to another or to the box");
+    fill.clearance      = 0.;
     fill.solid_fraction = 0.45;
     bool refused        = false;
     try

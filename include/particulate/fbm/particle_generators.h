@@ -73,11 +73,15 @@ namespace particulate {
       double          solid_fraction     = 0.;                      ///< [-]
       unsigned int    seed               = 1;
       bool            random_orientation = false;
+      /** Smallest gap [m] between the balls that hold the particles, and
+       *  between them and the box's faces and the @p occupied balls. */
+      double clearance = 0.;
 
       /**
        * The poses of the particles of shape @p shape, placed around
        * @p occupied, with @p orientation where they are not turned at
-       * random.
+       * random; every ball that holds a particle keeps the clearance to the
+       * others and to the box.
        * @throw std::runtime_error when no particle fits or 1000 tries per
        *   particle do not place them all (saying how many were placed)
        */
