@@ -33,8 +33,8 @@ import sys
 
 import numpy as np
 
-from particulate_output import (read_parameters, read_series, redraw_if_asked,
-                                write_table)
+from particulate_output import (read_parameters, read_particle_series,
+                                read_series, redraw_if_asked, write_table)
 
 
 def free_particles(folder):
@@ -57,8 +57,7 @@ def released_energy(bodies, masses, g, k):
 
 def load(folder):
     ids, masses = free_particles(folder)
-    bodies = [read_series(os.path.join(folder, "particle_%d.dat" % i))
-              for i in ids]
+    bodies = read_particle_series(folder, ids)
     if not bodies:
         sys.exit("funnel_basket.py: %s has no free particles" % folder)
     flow = read_series(os.path.join(folder, "flow.dat"))

@@ -34,7 +34,8 @@ import sys
 
 import numpy as np
 
-from particulate_output import read_parameters, read_series
+from particulate_output import (read_parameters, read_particle_series,
+                                read_series)
 
 
 def vector(columns, names):
@@ -61,9 +62,7 @@ def main():
     if not particles:
         sys.exit("mixed_set.py: no free particle in particle_set.csv")
 
-    bodies = [read_series(os.path.join(args.output,
-                                       "particle_%s.dat" % p["id"]))
-              for p in particles]
+    bodies = read_particle_series(args.output, [p["id"] for p in particles])
     t = bodies[0]["time"]
     mass = np.array([float(p["mass"]) for p in particles])
     volume = np.array([float(p["volume"]) for p in particles])

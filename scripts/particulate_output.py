@@ -15,6 +15,21 @@ def read_series(path):
     return {name: data[:, i] for i, name in enumerate(header)}
 
 
+def read_particle_series(folder, ids):
+    """The time series of the particles `ids` of a run, each as {column
+    name: array}: from their own particle_<i>.dat or, where the run shared
+    its particle files ('Particle files'), from the rows of particles.dat
+    with that id."""
+    shared = os.path.join(folder, "particles.dat")
+    if not os.path.exists(shared):
+        return [read_series(os.path.join(folder, "particle_%d.dat" % int(i)))
+                for i in ids]
+    rows = read_series(shared)
+    of = rows.pop("id").astype(int)
+    return [{name: column[of == int(i)] for name, column in rows.items()}
+            for i in ids]
+
+
 def read_parameters(folder):
     """The entries of <folder>/used_parameters.prm as
     {"Subsection/.../Entry": value text}."""

@@ -23,15 +23,15 @@ import os
 
 import numpy as np
 
-from particulate_output import read_series, redraw_if_asked, write_table
+from particulate_output import (read_particle_series, read_series,
+                                redraw_if_asked, write_table)
 
 
 def free_bodies(folder):
     with open(os.path.join(folder, "particle_set.csv")) as f:
         ids = [int(row["id"]) for row in csv.DictReader(f)
                if row["motion"] == "free"]
-    return [read_series(os.path.join(folder, "particle_%d.dat" % i))
-            for i in ids]
+    return read_particle_series(folder, ids)
 
 
 def draw(path, header, table):

@@ -6,8 +6,9 @@ pile at rest, without ever overlapping each other or the walls.
         [--rest-speed 0.005] [--support-gap CELLS]
 
 reads OUTPUT/particle_set.csv (shapes' volumes: the radius of a disk per
-unit depth, r = sqrt(V/pi), or of a sphere), OUTPUT/particle_<n>.dat and
-the box of OUTPUT/used_parameters.prm, and exits 1 unless
+unit depth, r = sqrt(V/pi), or of a sphere), OUTPUT/particle_<n>.dat (or
+the shared particles.dat) and the box of OUTPUT/used_parameters.prm, and
+exits 1 unless
 
 - at every step every body lies inside the box and no two bodies overlap
   (centres at least r_i + r_j apart);
@@ -28,6 +29,9 @@ import sys
 import numpy as np
 from used_parameters import used_value
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from particulate_output import read_particle_series  # noqa: E402
+
 
 def bodies(folder):
     """Radius and series of every body, in id order."""
@@ -35,15 +39,12 @@ def bodies(folder):
         rows = list(csv.DictReader(f))
     dim = 3 if any(float(r["z"]) != 0 for r in rows) else 2
     result = []
-    for r in rows:
+    series = read_particle_series(folder, [r["id"] for r in rows])
+    for r, s in zip(rows, series):
         volume = float(r["volume"])
         radius = (math.sqrt(volume / math.pi) if dim == 2 else
                   (3 * volume / (4 * math.pi)) ** (1 / 3))
-        path = os.path.join(folder, f"particle_{r['id']}.dat")
-        with open(path) as f:
-            names = f.readline().lstrip("#").split()
-        data = np.loadtxt(path, ndmin=2)
-        result.append((radius, {n: data[:, i] for i, n in enumerate(names)}))
+        result.append((radius, s))
     return dim, result
 
 

@@ -146,6 +146,19 @@ namespace particulate {
                         flag_text(defaults.write_vtu),
                         Patterns::Bool(),
                         "Write .vtu/.pvtu/.pvd files of the flow field.");
+      prm.declare_entry(
+        "Particle files",
+        "automatic",
+        Patterns::Selection("automatic|each particle|shared"),
+        "How a run with particles writes them. 'each particle': the time "
+        "series particle_<i>.dat and the surface series "
+        "particle_surfaces/body_<i>.pvd of every particle (one open file and "
+        "one file per output step each). 'shared': one time series "
+        "particles.dat with a row per particle and step (column id) and one "
+        "file of all surfaces per output step, particle_surfaces_NNNNN.vtp "
+        "(cell data id): the number of files does not grow with the "
+        "particles. 'automatic': each particle up to 100 particles, shared "
+        "above.");
       prm.leave_subsection();
     }
 
@@ -153,9 +166,13 @@ namespace particulate {
     OutputParameters::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      directory = prm.get("Directory");
-      interval  = prm.get_integer("Interval");
-      write_vtu = prm.get_bool("Write ParaView files");
+      directory               = prm.get("Directory");
+      interval                = prm.get_integer("Interval");
+      write_vtu               = prm.get_bool("Write ParaView files");
+      const std::string files = prm.get("Particle files");
+      particle_files          = files == "shared" ? ParticleFiles::shared :
+                                files == "each particle" ? ParticleFiles::each_particle :
+                                                           ParticleFiles::automatic;
       prm.leave_subsection();
     }
   } // namespace core

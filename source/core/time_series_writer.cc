@@ -35,15 +35,28 @@ namespace particulate {
     void
     TimeSeriesWriter::write_row(const std::vector<double> &values)
     {
-      if (values.size() != columns.size())
-        throw std::logic_error("TimeSeriesWriter: row has "
-                               + std::to_string(values.size()) + " values for "
-                               + std::to_string(columns.size()) + " columns");
+      write_rows({values});
+    }
+
+
+
+    void
+    TimeSeriesWriter::write_rows(const std::vector<std::vector<double>> &rows)
+    {
+      for (const auto &values : rows)
+        if (values.size() != columns.size())
+          throw std::logic_error(
+            "TimeSeriesWriter: row has " + std::to_string(values.size())
+            + " values for " + std::to_string(columns.size()) + " columns");
       if (!writer)
         return;
-      for (unsigned int i = 0; i < values.size(); ++i)
-        out << (i > 0 ? " " : "") << values[i];
-      out << std::endl;
+      for (const auto &values : rows)
+        {
+          for (unsigned int i = 0; i < values.size(); ++i)
+            out << (i > 0 ? " " : "") << values[i];
+          out << '\n';
+        }
+      out.flush();
     }
 
 

@@ -68,35 +68,46 @@ namespace particulate {
                                                  const bool   restart,
                                                  const double time)
     {
-      for (unsigned int i = 0; i < n_bodies; ++i)
-        body_series.push_back(open_series("particle_" + std::to_string(i),
-                                          {"time",
-                                           "x",
-                                           "y",
-                                           "z",
-                                           "u",
-                                           "v",
-                                           "w",
-                                           "omega_x",
-                                           "omega_y",
-                                           "omega_z",
-                                           "F_x",
-                                           "F_y",
-                                           "F_z",
-                                           "T_x",
-                                           "T_y",
-                                           "T_z",
-                                           "Fc_x",
-                                           "Fc_y",
-                                           "Fc_z",
-                                           "kinetic_energy",
-                                           "nodes_inside",
-                                           "q_w",
-                                           "q_x",
-                                           "q_y",
-                                           "q_z"},
-                                          restart,
-                                          time));
+      shared_files = parameters.shares_particle_files(n_bodies);
+      const std::vector<std::string> columns{"time",
+                                             "x",
+                                             "y",
+                                             "z",
+                                             "u",
+                                             "v",
+                                             "w",
+                                             "omega_x",
+                                             "omega_y",
+                                             "omega_z",
+                                             "F_x",
+                                             "F_y",
+                                             "F_z",
+                                             "T_x",
+                                             "T_y",
+                                             "T_z",
+                                             "Fc_x",
+                                             "Fc_y",
+                                             "Fc_z",
+                                             "kinetic_energy",
+                                             "nodes_inside",
+                                             "q_w",
+                                             "q_x",
+                                             "q_y",
+                                             "q_z"};
+      if (shared_files)
+        {
+          std::vector<std::string> with_id = columns;
+          with_id.insert(with_id.begin() + 1, "id");
+          body_series.push_back(
+            open_series("particles", with_id, restart, time));
+          surface_output.set_layout(rigid::BodySurfaceWriter::Layout::one_file);
+        }
+      else
+        for (unsigned int i = 0; i < n_bodies; ++i)
+          body_series.push_back(open_series("particle_" + std::to_string(i),
+                                            columns,
+                                            restart,
+                                            time));
       if (adapted_mesh)
         mesh_series = open_series("mesh",
                                   {"time",
@@ -150,11 +161,14 @@ namespace particulate {
       const double                   time,
       const std::vector<BodyRecord> &bodies)
     {
-      AssertDimension(bodies.size(), body_series.size());
+      AssertDimension(shared_files ? 1 : bodies.size(), body_series.size());
+      std::vector<std::vector<double>> rows;
       for (unsigned int i = 0; i < bodies.size(); ++i)
         {
-          const BodyRecord                            &r = bodies[i];
-          std::vector<double>                          row{time};
+          const BodyRecord   &r = bodies[i];
+          std::vector<double> row{time};
+          if (shared_files)
+            row.push_back(i);
           const std::array<const Eigen::Vector3d *, 6> columns{
             {&r.body->position,
              &r.body->linear_velocity,
@@ -170,8 +184,13 @@ namespace particulate {
           const Eigen::Quaterniond &q = r.body->orientation;
           for (const double c : {q.w(), q.x(), q.y(), q.z()})
             row.push_back(c);
-          body_series[i]->write_row(row);
+          if (shared_files)
+            rows.push_back(std::move(row));
+          else
+            body_series[i]->write_row(row);
         }
+      if (shared_files)
+        body_series.front()->write_rows(rows);
     }
 
 

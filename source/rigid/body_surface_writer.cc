@@ -94,9 +94,11 @@ namespace particulate {
 
 
 
-    BodySurfaceWriter::BodySurfaceWriter(std::string prefix)
+    BodySurfaceWriter::BodySurfaceWriter(std::string  prefix,
+                                         const Layout layout)
       : prefix(prefix)
       , series(std::move(prefix))
+      , layout(layout)
     {}
 
 
@@ -151,24 +153,29 @@ namespace particulate {
 
 
     void
-    BodySurfaceWriter::write_piece(const std::string   &name,
-                                   const PlacedSurface &surface)
+    BodySurfaceWriter::write_piece(const std::string                &name,
+                                   const std::vector<PlacedSurface> &surfaces)
     {
       std::ofstream out(name);
       if (!out)
         throw std::runtime_error("rigid::BodySurfaceWriter: cannot open '"
                                  + name
                                  + "' for writing; does the folder exist?");
-      const std::vector<PlacedSurface> surfaces{surface};
+      std::size_t n_points = 0, n_triangles = 0;
+      for (const auto &s : surfaces)
+        {
+          n_points += s.points.size();
+          n_triangles += s.mesh->n_triangles();
+        }
       out << std::setprecision(10)
           << "<?xml version=\"1.0\"?>\n"
              "<VTKFile type=\"PolyData\" version=\"0.1\" "
              "byte_order=\"LittleEndian\">\n"
              "  <PolyData>\n"
-          << "    <Piece NumberOfPoints=\"" << surface.points.size()
+          << "    <Piece NumberOfPoints=\"" << n_points
           << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
              "NumberOfPolys=\""
-          << surface.mesh->n_triangles() << "\">\n      <Points>\n";
+          << n_triangles << "\">\n      <Points>\n";
       write_points(out, nullptr, surfaces, false);
       out << "      </Points>\n";
       write_polys(out, surfaces);
@@ -188,6 +195,31 @@ namespace particulate {
     std::string
     BodySurfaceWriter::write(const World &world)
     {
+      return layout == Layout::each_body ? write_each_body(world) :
+                                           write_one_file(world);
+    }
+
+
+
+    std::string
+    BodySurfaceWriter::write_one_file(const World &world)
+    {
+      std::vector<PlacedSurface> surfaces;
+      for (BodyId i = 0; i < world.n_bodies(); ++i)
+        if (world.body(i).shape().is_bounded())
+          surfaces.push_back(
+            place(world.body(i), i, display_mesh(world.body(i))));
+      const std::string name = series.next_file("vtp");
+      write_piece(name, surfaces);
+      series.add(world.time(), name);
+      return name;
+    }
+
+
+
+    std::string
+    BodySurfaceWriter::write_each_body(const World &world)
+    {
       const std::size_t snapshot = series.written().size();
       // the pieces lie in the folder named like the series, next to it
       const std::string  folder = std::filesystem::path(prefix).filename();
@@ -199,7 +231,7 @@ namespace particulate {
             PvdSeries        &own   = body_series(i);
             const std::string piece = piece_name(i, snapshot);
             write_piece(prefix + "/" + piece,
-                        place(world.body(i), i, display_mesh(world.body(i))));
+                        {place(world.body(i), i, display_mesh(world.body(i)))});
             own.add(world.time(), prefix + "/" + piece);
             blocks << "    <DataSet index=\"" << block++ << "\" name=\"body "
                    << i << "\" file=\"" << folder << "/" << piece << "\"/>\n";

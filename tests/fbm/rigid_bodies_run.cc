@@ -9,7 +9,8 @@
 //   centre at r + d to 1e-6 r, the spheroid's at its semi-minor axis + d
 //   to a tenth of its map's spacing (the automatic one: 11.906 mm / 16);
 // - the run writes the particles' series and table as a particulate flow
-//   run does.
+//   run does; with 'Particle files = shared' the one series particles.dat
+//   holds the same rows.
 
 #include <particulate/fbm/rigid_bodies_simulation.h>
 
@@ -77,5 +78,38 @@ main(int argc, char **argv)
                   && std::filesystem::exists(output + "/particles.pvd")
                   && std::filesystem::exists(output + "/particle_surfaces.pvd"),
                 "the particles' table, series and ParaView files");
+
+  // the same run with shared particle files: particles.dat holds every
+  // particle's rows, equal to its own series, and each output step one file
+  // of all surfaces
+  const std::string shared = "rigid_bodies_run_shared";
+  std::filesystem::remove_all(shared);
+  std::filesystem::create_directories(shared);
+  parameters.flow.output.directory = shared;
+  parameters.flow.output.particle_files
+    = core::OutputParameters::ParticleFiles::shared;
+  fbm::RigidBodiesSimulation<3>(parameters, case_file, MPI_COMM_SELF).run();
+  const auto rows = testing::read_time_series(shared + "/particles.dat");
+  bool       same = rows.size() == 2 * series.size();
+  for (unsigned int id = 0; id < 2 && same; ++id)
+    {
+      const auto own = testing::read_time_series(output + "/particle_"
+                                                 + std::to_string(id) + ".dat");
+      for (unsigned int k = 0; k < own.size() && same; ++k)
+        {
+          std::vector<double> row = rows[2 * k + id];
+          same                    = row[1] == id;
+          row.erase(row.begin() + 1);
+          same = same && row == own[k];
+        }
+    }
+  checker.check(same,
+                "particles.dat: a row per particle and step (id in its second "
+                "column), equal to the particle's own series");
+  checker.check(std::filesystem::exists(shared + "/particle_surfaces_00001.vtp")
+                  && !std::filesystem::exists(shared + "/particle_surfaces")
+                  && !std::filesystem::exists(shared + "/particle_0.dat"),
+                "shared: one surface file per output step, no files per "
+                "particle");
   return checker.exit_code();
 }

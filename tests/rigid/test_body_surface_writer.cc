@@ -7,7 +7,7 @@
 // 1e-8 m/s), the cell ids the body's id; each body's series lists its
 // pieces, the multiblock file of a call names every body's piece, its series
 // one file per call, and a writer resumed from the written series goes on
-// with all of them.
+// with all of them. With one file per call, that file holds every surface.
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/capsule.h>
 #include <particulate/geometry/half_space.h>
@@ -153,5 +153,49 @@ main()
         own);
   std::cout << n_points << " points, " << n_triangles
             << " triangles of 3 bodies, each its own series: OK\n";
+
+  // one file per call: every surface in one piece, told apart by id
+  rigid::BodySurfaceWriter one("body_surface_files/all",
+                               rigid::BodySurfaceWriter::Layout::one_file);
+  for (unsigned int call = 0; call < 3; ++call)
+    one.write(world);
+  const std::string all = read("body_surface_files/all_00002.vtp");
+  CHECK(all.find("NumberOfPoints=\"" + std::to_string(n_points) + "\"")
+            != std::string::npos
+          && all.find("NumberOfPolys=\"" + std::to_string(n_triangles) + "\"")
+               != std::string::npos,
+        "one piece holds all " << n_points << " points");
+  std::vector<std::size_t> triangles_of(world.n_bodies(), 0);
+  for (const double id : data_array(all, 4))
+    ++triangles_of.at(std::size_t(id));
+  for (rigid::BodyId b = 1; b < world.n_bodies(); ++b)
+    CHECK(triangles_of[b] == world.body(b).shape().surface_mesh().n_triangles(),
+          "body " << b << " has " << triangles_of[b] << " triangles");
+  CHECK(!std::filesystem::exists("body_surface_files/all"),
+        "no folder of per-body pieces");
+
+  // the series file is appended to, and stays a valid collection; one
+  // that is not as the writer left it is written anew
+  const auto count = [](const std::string &text, const std::string &what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos;
+         at             = text.find(what, at + 1))
+      ++n;
+    return n;
+  };
+  const std::string appended = read("body_surface_files/all.pvd");
+  CHECK(count(appended, "<DataSet") == 3
+          && count(appended, "</Collection>") == 1 && appended.size() > 11
+          && appended.substr(appended.size() - 11) == "</VTKFile>\n"
+          && appended.find("all_00002.vtp") != std::string::npos,
+        appended);
+  std::ofstream("body_surface_files/all.pvd", std::ios::app) << "junk\n";
+  one.write(world);
+  const std::string rewritten = read("body_surface_files/all.pvd");
+  CHECK(count(rewritten, "<DataSet") == 4 && count(rewritten, "junk") == 0
+          && rewritten.substr(0, appended.size() - 27)
+               == appended.substr(0, appended.size() - 27),
+        rewritten);
+  std::cout << "one file per call, the series appended: OK\n";
   return 0;
 }

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <cstddef>
 #include <string>
 
 namespace particulate {
@@ -65,9 +66,27 @@ namespace particulate {
     /** subsection `Output`: where and how often results are written. */
     struct OutputParameters
     {
-      std::string  directory = "output";
-      unsigned int interval  = 1; ///< write VTU every this many time steps
-      bool         write_vtu = true;
+      /** How a particulate run writes its particles' series. */
+      enum class ParticleFiles
+      {
+        automatic,     ///< each particle's own up to 100 particles
+        each_particle, ///< `particle_<i>.dat`, a surface series per body
+        shared         ///< `particles.dat`, all surfaces in one file
+      };
+
+      std::string   directory = "output";
+      unsigned int  interval  = 1; ///< write VTU every this many time steps
+      bool          write_vtu = true;
+      ParticleFiles particle_files = ParticleFiles::automatic;
+
+      /** Whether a run with @p n_particles writes shared particle files. */
+      bool
+      shares_particle_files(const std::size_t n_particles) const
+      {
+        return particle_files == ParticleFiles::shared
+               || (particle_files == ParticleFiles::automatic
+                   && n_particles > 100);
+      }
 
       static void
       declare(dealii::ParameterHandler &prm);

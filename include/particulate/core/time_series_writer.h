@@ -12,7 +12,7 @@ namespace particulate {
     /**
      * A whitespace-separated time series (`.dat`) with a header line
      * `# time  c_D  c_L ...`, loadable with numpy.loadtxt. Rank 0 writes;
-     * every row is flushed so that a run that stops early keeps all rows
+     * every call is flushed so that a run that stops early keeps all rows
      * written so far.
      */
     class TimeSeriesWriter
@@ -33,6 +33,10 @@ namespace particulate {
       /** Write one row; needs one value per column. */
       void
       write_row(const std::vector<double> &values);
+
+      /** Write several rows, flushed once. */
+      void
+      write_rows(const std::vector<std::vector<double>> &rows);
 
       /** Write @p text as a comment line (`# text`, one line). */
       void

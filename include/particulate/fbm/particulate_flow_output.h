@@ -35,14 +35,17 @@ namespace particulate {
     /**
      * What a particulate-flow run writes into its output folder: the time
      * series `particle_<i>.dat` (one per body: pose, velocities, loads,
-     * contact force, kinetic energy, covered nodes), `particle_set.csv`
+     * contact force, kinetic energy, covered nodes; with many particles, or
+     * 'Particle files = shared', one `particles.dat` with a row per body
+     * and its number in the column id), `particle_set.csv`
      * (what each particle is), `flow.dat` (kinetic
      * energies, iteration counts, time step, deepest contact overlap) and, on
      * an adapted mesh, `mesh.dat` (its quality); and the ParaView series
      * `flow.pvd`, `particles.pvd` (a point per body with its state, for glyphs)
      * and the bodies' surfaces, any shape: each body's own series
      * `particle_surfaces/body_<i>.pvd` and all of them in
-     * `particle_surfaces.pvd` (rigid::BodySurfaceWriter).
+     * `particle_surfaces.pvd` (rigid::BodySurfaceWriter; shared files: one
+     * piece of all surfaces per output step, in `particle_surfaces.pvd`).
      *
      * A restart continues every series: the ParaView files listed in the
      * checkpoint (save(), load()), and the `.dat` files without the rows
@@ -81,7 +84,8 @@ namespace particulate {
       record_mesh(const double                          time,
                   const deformation::DeformationReport &report);
 
-      /** A row of each `particle_<i>.dat`, one record per body. */
+      /** A row of each `particle_<i>.dat` (shared files: a row per body
+       *  of `particles.dat`), one record per body. */
       void
       record_bodies(const double time, const std::vector<BodyRecord> &bodies);
 
@@ -136,11 +140,14 @@ namespace particulate {
                   const bool                      restart,
                   const double                    time) const;
 
-      const core::OutputParameters                         parameters;
-      MPI_Comm                                             communicator;
-      fluid::FlowOutput<dim>                               flow_output;
-      rigid::VtpWriter                                     body_output;
-      rigid::BodySurfaceWriter                             surface_output;
+      const core::OutputParameters parameters;
+      MPI_Comm                     communicator;
+      fluid::FlowOutput<dim>       flow_output;
+      rigid::VtpWriter             body_output;
+      rigid::BodySurfaceWriter     surface_output;
+      /// particles.dat and one surface file per output instead of files
+      /// per particle ('Particle files')
+      bool                                                 shared_files = false;
       std::vector<std::unique_ptr<core::TimeSeriesWriter>> body_series;
       std::unique_ptr<core::TimeSeriesWriter>              mesh_series;
       std::unique_ptr<core::TimeSeriesWriter>              flow_series;

@@ -25,10 +25,22 @@ namespace particulate {
      * naming every body's piece as a block "body <id>", in the series
      * `<prefix>.pvd`: all bodies at once, each selectable. Opens in ParaView
      * as it is, any shape.
+     *
+     * With many bodies, Layout::one_file writes all surfaces into one piece
+     * `<prefix>_NNNNN.vtp` per call instead (the cell data id tells them
+     * apart), in the series `<prefix>.pvd`: the number of files does not
+     * grow with the bodies.
      */
     class BodySurfaceWriter
     {
     public:
+      /** Files per call: one per body, each in its own series, or one. */
+      enum class Layout
+      {
+        each_body,
+        one_file
+      };
+
       /** One body's surface in the world frame and its velocity there. */
       struct PlacedSurface
       {
@@ -40,11 +52,20 @@ namespace particulate {
       };
 
       /** @param prefix Path prefix, e.g. "output/particle_surfaces". */
-      explicit BodySurfaceWriter(std::string prefix);
+      explicit BodySurfaceWriter(std::string  prefix,
+                                 const Layout layout = Layout::each_body);
 
-      /** Writes the current state; returns the multiblock file's name. */
+      /** Writes the current state; returns the name of the file that holds
+       *  all bodies (the multiblock file, or the one piece). */
       std::string
       write(const World &world);
+
+      /** Choose the files of the calls to come (before the first). */
+      void
+      set_layout(const Layout l)
+      {
+        layout = l;
+      }
 
       /** The series of all bodies written so far (time, multiblock file),
        *  for a checkpoint. */
@@ -77,12 +98,22 @@ namespace particulate {
       static std::string
       piece_name(const BodyId id, const std::size_t snapshot);
 
-      /** One body's surface as the PolyData file @p name. */
+      /** Layout::each_body: a piece per body and the multiblock file. */
+      std::string
+      write_each_body(const World &world);
+
+      /** Layout::one_file: one piece with every body. */
+      std::string
+      write_one_file(const World &world);
+
+      /** The @p surfaces as the PolyData file @p name. */
       static void
-      write_piece(const std::string &name, const PlacedSurface &surface);
+      write_piece(const std::string                &name,
+                  const std::vector<PlacedSurface> &surfaces);
 
       const std::string           prefix;
       PvdSeries                   series;
+      Layout                      layout;
       std::map<BodyId, PvdSeries> bodies;
       std::unordered_map<const geometry::Shape *,
                          std::pair<std::shared_ptr<const geometry::Shape>,

@@ -1,6 +1,7 @@
 #ifndef particulate_rigid_pvd_series_h
 #define particulate_rigid_pvd_series_h
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,8 +11,9 @@ namespace particulate {
     /**
      * A ParaView time series of numbered files: the piece names
      * `<prefix>_NNNNN.<extension>` and the collection `<prefix>.pvd` that maps
-     * physical time to them, rewritten after each piece so that it is valid at
-     * any moment.
+     * physical time to them, valid at any moment: each piece's entry is
+     * appended in place of the closing tags (the whole file is rewritten
+     * only when it is not as this object left it, e.g. after a restart).
      */
     class PvdSeries
     {
@@ -23,7 +25,7 @@ namespace particulate {
       std::string
       next_file(const std::string &extension) const;
 
-      /** Record the piece @p file at @p time and rewrite the `.pvd`. */
+      /** Record the piece @p file at @p time in the `.pvd`. */
       void
       add(const double time, const std::string &file);
 
@@ -40,12 +42,24 @@ namespace particulate {
       void
       resume(std::vector<std::pair<double, std::string>> written)
       {
-        series = std::move(written);
+        series     = std::move(written);
+        file_bytes = 0;
       }
 
     private:
+      /** Append the last entry to the `.pvd` as written before; false
+       *  where that file is not as this object left it. */
+      bool
+      append_last_entry();
+
+      /** Write the whole `.pvd`. */
+      void
+      rewrite();
+
       std::string                                 prefix;
       std::vector<std::pair<double, std::string>> series;
+      /// size of the `.pvd` as this object last wrote it (0: not yet)
+      std::uintmax_t file_bytes = 0;
     };
   } // namespace rigid
 } // namespace particulate
