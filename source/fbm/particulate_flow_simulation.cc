@@ -36,7 +36,6 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -630,12 +629,15 @@ namespace particulate {
     void
     ParticulateFlowSimulation<dim>::impose_body_velocities()
     {
-      Run               &r = *run_;
-      TimerOutput::Scope scope(r.timer, "fbm: containment and constraints");
+      Run &r = *run_;
+      {
+        TimerOutput::Scope scope(r.timer, "fbm: containment");
+        r.interface->classify(r.interface_bodies);
+      }
+      TimerOutput::Scope scope(r.timer, "fbm: constraints");
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         r.states[i].load_centre = r.world->body(r.ids[i]).position;
       record_imposed();
-      r.interface->classify(r.interface_bodies);
       r.flow->set_fictitious_boundary_values(
         r.interface->constraint_values(r.interface_bodies));
     }
@@ -650,22 +652,40 @@ namespace particulate {
       // (which the output at t_n shows); at the start of the step because
       // only then is the step size k known. The loads are then taken about
       // the centres that were marked.
-      Run               &r          = *run_;
-      const auto        &particle_p = parameters.particles;
-      TimerOutput::Scope scope(r.timer, "fbm: containment and constraints");
-      std::vector<std::tuple<Eigen::Vector3d,
-                             Eigen::Quaterniond,
-                             Eigen::Vector3d,
-                             Eigen::Vector3d>>
-        current;
+      Run                    &r = *run_;
+      std::vector<BodyMotion> current;
+      {
+        TimerOutput::Scope scope(r.timer, "fbm: constraints");
+        current = move_free_bodies_to_prediction(k);
+      }
+      if (parameters.particles.midpoint_interface_position)
+        {
+          TimerOutput::Scope scope(r.timer, "fbm: containment");
+          r.interface->classify(r.interface_bodies);
+        }
+      TimerOutput::Scope scope(r.timer, "fbm: constraints");
+      auto values = r.interface->constraint_values(r.interface_bodies);
+      record_imposed();
+      restore_bodies(current);
+      r.flow->set_fictitious_boundary_values(std::move(values));
+    }
+
+
+
+    template <int dim>
+    std::vector<typename ParticulateFlowSimulation<dim>::BodyMotion>
+    ParticulateFlowSimulation<dim>::move_free_bodies_to_prediction(
+      const double k)
+    {
+      Run                    &r          = *run_;
+      const auto             &particle_p = parameters.particles;
+      std::vector<BodyMotion> current;
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         {
           rigid::RigidBody        &b = r.world->body(r.ids[i]);
           const BodyCouplingState &s = r.states[i];
-          current.emplace_back(b.position,
-                               b.orientation,
-                               b.linear_velocity,
-                               b.angular_velocity);
+          current.push_back(
+            {b.position, b.orientation, b.linear_velocity, b.angular_velocity});
           // only free bodies are predicted; the others are where and how
           // they move over the step
           if (particle_p.bodies[i].motion != ParticleMotion::free)
@@ -693,20 +713,25 @@ namespace particulate {
             }
           r.states[i].load_centre = b.position;
         }
-      if (particle_p.midpoint_interface_position)
-        r.interface->classify(r.interface_bodies);
-      auto values = r.interface->constraint_values(r.interface_bodies);
-      record_imposed();
+      return current;
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::restore_bodies(
+      const std::vector<BodyMotion> &states)
+    {
+      Run &r = *run_;
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         {
           rigid::RigidBody &b = r.world->body(r.ids[i]);
-          std::tie(b.position,
-                   b.orientation,
-                   b.linear_velocity,
-                   b.angular_velocity)
-            = current[i];
+          b.position          = states[i].position;
+          b.orientation       = states[i].orientation;
+          b.linear_velocity   = states[i].velocity;
+          b.angular_velocity  = states[i].angular_velocity;
         }
-      r.flow->set_fictitious_boundary_values(std::move(values));
     }
 
 
@@ -739,7 +764,7 @@ namespace particulate {
         report = r.adapted_mesh->follow(poses, *r.flow, k);
       }
       r.output.record_mesh(t_new, report);
-      TimerOutput::Scope scope(r.timer, "fbm: containment and constraints");
+      TimerOutput::Scope scope(r.timer, "fbm: containment");
       r.interface->setup();
     }
 

@@ -252,11 +252,15 @@ namespace particulate {
                                        != decoupled_pressures_searched_for,
                                      communicator))
         {
-          UndeterminedPressures undetermined
-            = find_undetermined_pressure_dofs(dof_handler,
-                                              mapping,
-                                              zero_constraints,
-                                              prescribed);
+          UndeterminedPressures undetermined;
+          {
+            TimerOutput::Scope scope(timer,
+                                     "fluid: undetermined pressure search");
+            undetermined = find_undetermined_pressure_dofs(dof_handler,
+                                                           mapping,
+                                                           zero_constraints,
+                                                           prescribed);
+          }
           decoupled_pressure_dofs = std::move(undetermined.decoupled);
           // fluid the bodies wall off from the flow (none without them)
           TimerOutput::Scope scope(timer, "fluid: enclosed fluid search");

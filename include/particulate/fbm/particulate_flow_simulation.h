@@ -10,6 +10,7 @@
 #include <particulate/fluid/run_profile.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cstddef>
 #include <functional>
@@ -214,6 +215,15 @@ namespace particulate {
     private:
       struct Run;
 
+      /** Where a body is and how it moves. */
+      struct BodyMotion
+      {
+        Eigen::Vector3d    position;
+        Eigen::Quaterniond orientation;
+        Eigen::Vector3d    velocity;
+        Eigen::Vector3d    angular_velocity;
+      };
+
       /** @name Parts of set_up() */
       /** @{ */
       void
@@ -239,6 +249,15 @@ namespace particulate {
        *  k/2 (omega_n + k/2 alpha_n); the bodies keep their state. */
       void
       impose_predicted_interface(const double k);
+      /** Move every free body to the state it shows the fluid over a step
+       *  of size @p k (see impose_predicted_interface()); returns every
+       *  body's state before, for restore_bodies(). */
+      std::vector<BodyMotion>
+      move_free_bodies_to_prediction(const double k);
+      /** Give the bodies back the @p states move_free_bodies_to_prediction()
+       *  returned. */
+      void
+      restore_bodies(const std::vector<BodyMotion> &states);
       /** The imposed velocities are the bodies' current ones. */
       void
       record_imposed();
