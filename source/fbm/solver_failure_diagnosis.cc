@@ -61,6 +61,17 @@ namespace particulate {
                  "in subsection 'Particles' to about a cell so that the "
                  "bodies keep the fluid between them, or 'Rigid substeps' "
                  "there.";
+        else if (c.n_contacts > 0 && c.contact_distance < 0.5 * c.smallest_cell)
+          // doc/validation/dense-bed.md: a bed in contact at 0.15 cells
+          // stalled the linear solver, at half a cell it did not
+          out << "bodies are in contact (" << c.n_contacts
+              << " contacts) at the contact distance " << c.contact_distance
+              << " m, below half the smallest cell (" << 0.5 * c.smallest_cell
+              << " m): the velocity nodes between them are covered by "
+                 "different bodies, and the pressure of the nearly covered "
+                 "cells there is weakly determined. Raise 'Contact distance' "
+                 "in subsection 'Particles' to at least half a cell, or set "
+                 "it to 'auto' (a cell).";
         else if (failure.kind == fluid::SolverFailure::Kind::linear)
           out << "nothing measured points at the step (CFL at most 1, "
                  "particles within a cell per step, no deep contact): the "

@@ -43,6 +43,9 @@ namespace particulate {
      *   CFL 1;
      * - bodies overlapping by more than the contact distance: the fluid
      *   in the closed gap is squeezed between two imposed velocities;
+     * - bodies in contact at a contact distance below half the smallest
+     *   cell: the nearly covered cells between them carry weakly
+     *   determined pressures; a contact distance of half a cell or more;
      * - none of these: the solver's settings (iterations, tolerance).
      */
     std::string
