@@ -154,6 +154,21 @@ namespace particulate {
                 .to_world(p.shape->bounding_box());
           for (unsigned int d = 0; d < dim; ++d)
             {
+              // wider than the domain along an axis without a mirror plane:
+              // no position fits it
+              if (!mirror_planes[2 * d] && !mirror_planes[2 * d + 1]
+                  && box.upper[d] - box.lower[d]
+                       > upper[d] - lower[d] + tolerance)
+                {
+                  std::ostringstream message;
+                  message << p.origin << ": particle " << i
+                          << " is larger than the domain: it spans "
+                          << box.upper[d] - box.lower[d] << " m along "
+                          << "xyz"[d] << ", the mesh " << upper[d] - lower[d]
+                          << " m. Make the particle smaller or the domain "
+                             "larger.";
+                  throw std::runtime_error(message.str());
+                }
               const bool below = box.lower[d] < lower[d] - tolerance
                                  && !(mirror_planes[2 * d]
                                       && p.position[d] >= lower[d] - tolerance);
