@@ -33,9 +33,34 @@ namespace particulate {
     }
 
     void
+    TimeSeriesWriter::check_row(const std::vector<double> &values) const
+    {
+      if (values.size() != columns.size())
+        throw std::logic_error("TimeSeriesWriter: row has "
+                               + std::to_string(values.size()) + " values for "
+                               + std::to_string(columns.size()) + " columns");
+    }
+
+
+
+    void
+    TimeSeriesWriter::put_row(const std::vector<double> &values)
+    {
+      for (unsigned int i = 0; i < values.size(); ++i)
+        out << (i > 0 ? " " : "") << values[i];
+      out << '\n';
+    }
+
+
+
+    void
     TimeSeriesWriter::write_row(const std::vector<double> &values)
     {
-      write_rows({values});
+      check_row(values);
+      if (!writer)
+        return;
+      put_row(values);
+      out.flush();
     }
 
 
@@ -44,18 +69,11 @@ namespace particulate {
     TimeSeriesWriter::write_rows(const std::vector<std::vector<double>> &rows)
     {
       for (const auto &values : rows)
-        if (values.size() != columns.size())
-          throw std::logic_error(
-            "TimeSeriesWriter: row has " + std::to_string(values.size())
-            + " values for " + std::to_string(columns.size()) + " columns");
+        check_row(values);
       if (!writer)
         return;
       for (const auto &values : rows)
-        {
-          for (unsigned int i = 0; i < values.size(); ++i)
-            out << (i > 0 ? " " : "") << values[i];
-          out << '\n';
-        }
+        put_row(values);
       out.flush();
     }
 

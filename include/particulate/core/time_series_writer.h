@@ -49,6 +49,14 @@ namespace particulate {
       }
 
     private:
+      /** Throws unless @p values has one value per column. */
+      void
+      check_row(const std::vector<double> &values) const;
+
+      /** One line of @p values, unflushed. */
+      void
+      put_row(const std::vector<double> &values);
+
       std::vector<std::string> columns;
       std::ofstream            out;
       bool                     writer;
