@@ -1,7 +1,12 @@
 """Readers of what a Particulate run writes into its output folder, for the
 scripts next to this file."""
+import base64
+import glob
 import os
+import re
+import struct
 import sys
+import zlib
 
 import numpy as np
 
@@ -45,6 +50,69 @@ def read_parameters(folder):
                 name, _, value = words[4:].partition("=")
                 values["/".join(sections + [name.strip()])] = value.strip()
     return values
+
+
+def _decode_vtu_array(text, path):
+    """The values of one zlib-compressed binary VTU DataArray (deal.II's
+    output) as float32. The base64 text starts with a header of uint32:
+    number of blocks, block size, last block size, then the compressed size
+    of every block."""
+    data = text.strip()
+    n_blocks = struct.unpack("<I", base64.b64decode(data[:8])[:4])[0]
+    header_bytes = 4 * (3 + n_blocks)
+    header_chars = (header_bytes + 2) // 3 * 4
+    header = struct.unpack(
+        "<%dI" % (3 + n_blocks), base64.b64decode(data[:header_chars])[:header_bytes]
+    )
+    raw = base64.b64decode(data[header_chars:])
+    values, offset = b"", 0
+    for size in header[3:]:
+        values += zlib.decompress(raw[offset : offset + size])
+        offset += size
+    return np.frombuffer(values, dtype="<f4")
+
+
+def read_vtu(path, names=()):
+    """The points of a flow snapshot's `.vtu` piece as an (n, 3) array and
+    its point data arrays `names` as {name: (n, components) array}."""
+    with open(path) as f:
+        text = f.read()
+    if 'compressor="vtkZLibDataCompressor"' not in text:
+        sys.exit(f"{path}: not a zlib-compressed binary VTU file")
+    match = re.search(r"<Points>\s*<DataArray[^>]*>([^<]*)</DataArray>", text)
+    if not match:
+        sys.exit(f"{path}: no points")
+    points = _decode_vtu_array(match.group(1), path).reshape(-1, 3)
+    arrays = {}
+    for name in names:
+        match = re.search(
+            r'<DataArray[^>]*Name="%s"[^>]*>([^<]*)</DataArray>' % re.escape(name),
+            text)
+        if not match:
+            sys.exit(f"{path}: no point data '{name}'")
+        values = _decode_vtu_array(match.group(1), path)
+        arrays[name] = values.reshape(points.shape[0], -1)
+    return points, arrays
+
+
+def read_flow_snapshot(folder, step, names=()):
+    """Snapshot `step` of a run (flow_<step>.<rank>.vtu of every rank)
+    joined: its points and point data arrays, as read_vtu gives them. Points
+    shared by cells appear once per cell."""
+    files = sorted(glob.glob(os.path.join(folder, "flow_%05d.*.vtu" % step)))
+    if not files:
+        sys.exit(f"{folder}: no flow_{step:05d}.*.vtu")
+    pieces = [read_vtu(f, names) for f in files]
+    points = np.concatenate([p for p, _ in pieces])
+    return points, {n: np.concatenate([a[n] for _, a in pieces]) for n in names}
+
+
+def flow_snapshots(folder):
+    """The flow snapshots of a run as (time, step), from flow.pvd."""
+    with open(os.path.join(folder, "flow.pvd")) as f:
+        text = f.read()
+    return [(float(t), int(s)) for t, s in re.findall(
+        r'timestep="([^"]+)"[^>]*file="flow_(\d+)\.pvtu"', text)]
 
 
 def write_table(path, header, table, every=1):

@@ -13,39 +13,13 @@ more, smaller cut cells than the regular mesh.
       output/ten-cate-e4-r0-kappa --centre 0 0 0.1275 --radius 0.0075
 """
 import argparse
-import base64
-import glob
 import os
-import re
-import struct
 import sys
-import zlib
 
 import numpy as np
 
-
-def read_points(path):
-    """The Points array of a VTU file as an (n, 3) array."""
-    with open(path) as f:
-        text = f.read()
-    match = re.search(r"<Points>\s*<DataArray[^>]*>\s*([^<]*)</DataArray>", text)
-    if not match or 'compressor="vtkZLibDataCompressor"' not in text:
-        sys.exit(f"{path}: not a zlib-compressed binary VTU file with points")
-    data = match.group(1).strip()
-    # header: number of blocks, block size, last block size, then the
-    # compressed size of every block, as uint32, base64-encoded on its own
-    n_blocks = struct.unpack("<I", base64.b64decode(data[:8])[:4])[0]
-    header_bytes = 4 * (3 + n_blocks)
-    header_chars = (header_bytes + 2) // 3 * 4
-    header = struct.unpack(
-        "<%dI" % (3 + n_blocks), base64.b64decode(data[:header_chars])[:header_bytes]
-    )
-    raw = base64.b64decode(data[header_chars:])
-    values, offset = b"", 0
-    for size in header[3:]:
-        values += zlib.decompress(raw[offset : offset + size])
-        offset += size
-    return np.frombuffer(values, dtype="<f4").reshape(-1, 3)
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from particulate_output import read_flow_snapshot  # noqa: E402
 
 
 def main():
@@ -57,10 +31,7 @@ def main():
     centre = np.array(args.centre)
     print("# run cut_cells mean_edge_of_cut_cells[m]")
     for folder in args.folders:
-        files = sorted(glob.glob(os.path.join(folder, "flow_00000.*.vtu")))
-        if not files:
-            sys.exit(f"{folder}: no flow_00000.*.vtu (the first snapshot)")
-        points = np.concatenate([read_points(f) for f in files])
+        points, _ = read_flow_snapshot(folder, 0)
         if points.shape[0] % 27:
             sys.exit(f"{folder}: expected 27 points per cell (3D, one subdivision)")
         cells = points.reshape(-1, 27, 3)
