@@ -10,8 +10,8 @@ unit depth, r = sqrt(V/pi), or of a sphere), OUTPUT/particle_<n>.dat (or
 the shared particles.dat) and the box of OUTPUT/used_parameters.prm, and
 exits 1 unless
 
-- at every step every body lies inside the box and no two bodies overlap
-  (centres at least r_i + r_j apart);
+- at every step every body lies inside the box (a 'column' mesh: inside
+  its mantle) and no two bodies overlap (centres at least r_i + r_j apart);
 - at the end every body moves slower than --rest-speed [m/s] and lies lower
   than it started;
 - at the end every body is supported: its lowest point is within
@@ -30,7 +30,7 @@ import numpy as np
 from used_parameters import used_value
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from particulate_output import read_particle_series  # noqa: E402
+from particulate_output import read_parameters, read_particle_series  # noqa: E402
 
 
 def bodies(folder):
@@ -72,8 +72,19 @@ def main():
     tolerance = 1e-9 * max(u - lo for u, lo in zip(upper, lower))
     failures = []
 
-    # inside the box at every step
+    # inside the box at every step; a column: inside its mantle
+    column = read_parameters(args.folder).get("Mesh/Type") == "column"
+    if column:
+        centre = [0.5 * (lower[d] + upper[d]) for d in range(2)]
+        mantle = 0.5 * min(upper[0] - lower[0], upper[1] - lower[1])
+        reach = np.hypot(position[:, 0, :] - centre[0],
+                         position[:, 1, :] - centre[1]) + radius[:, None]
+        if reach.max() > mantle + tolerance:
+            failures.append(f"a body crosses the mantle "
+                            f"(by {reach.max() - mantle:.3g} m)")
     for d, axis in enumerate(axes):
+        if column and d < 2:
+            continue
         low = position[:, d, :] - radius[:, None] - lower[d]
         high = upper[d] - position[:, d, :] - radius[:, None]
         if low.min() < -tolerance or high.min() < -tolerance:

@@ -30,13 +30,19 @@ namespace particulate {
         "Type",
         "hyper rectangle",
         Patterns::Selection(
-          "hyper rectangle|graded rectangle|ball|channel with cylinder|file"),
+          "hyper rectangle|graded rectangle|ball|column|channel with cylinder|file"),
         "Where the coarse mesh comes from. 'hyper rectangle': a box with "
         "boundary ids 0..2*dim-1 (x-min, x-max, y-min, y-max, z-min, z-max). "
         "'ball': the ball inscribed in the box of 'Lower corner' and 'Upper "
         "corner' (centred in it, radius half its shortest side; deal.II's "
         "hyper_ball, 5 cells in 2D, 7 in 3D) with a curved boundary of id 0 "
-        "(e.g. a container around a particle). "
+        "(e.g. a container around a particle). 'column' (3D): the circular "
+        "cylinder along z inscribed in that box (axis through the centre of "
+        "its x-y rectangle, radius half the rectangle's shorter side, from "
+        "the box's lower to its upper z; a fluidized-bed column), its cross "
+        "section deal.II's five-cell disk and 'Subdivisions' z-value cells "
+        "along the axis, with boundary ids 0 mantle, 1 bottom (lower z), "
+        "2 top. "
         "'channel with cylinder': the DFG benchmark channel (height and depth "
         "0.41 m, cylinder diameter 0.1 m, axis along z at y = 0.2 m) with "
         "boundary ids 0 inflow, 1 outflow, 2 cylinder, 3 walls. 'file': read "
@@ -119,6 +125,7 @@ namespace particulate {
                             t == "channel with cylinder" ? Type::channel_with_cylinder :
                             t == "graded rectangle" ? Type::graded_rectangle :
                             t == "ball"             ? Type::ball :
+                            t == "column"           ? Type::column :
                                                       Type::hyper_rectangle;
       file_name           = prm.get("File name");
       refinements         = prm.get_integer("Refinements");
@@ -162,6 +169,51 @@ namespace particulate {
           p[d] = values[d];
         return p;
       }
+
+      /**
+       * The column of @p p: deal.II's subdivided cylinder, which lies
+       * along x about the origin, turned (x to z, y to x, z to y) and moved
+       * into the box of 'Lower corner' and 'Upper corner'; the mantle keeps
+       * its cylindrical manifold (about the new axis), the cells get a
+       * transfinite interpolation so that refined interior vertices follow
+       * the curved mantle.
+       */
+      void
+      make_column(const MeshParameters &p, Triangulation<3> &tria)
+      {
+        const Point<3> lower = corner<3>(p.lower_corner, "Lower corner");
+        const Point<3> upper = corner<3>(p.upper_corner, "Upper corner");
+        const double   radius
+          = 0.5 * std::min(upper[0] - lower[0], upper[1] - lower[1]);
+        const double half_length = 0.5 * (upper[2] - lower[2]);
+        if (!(radius > 0.) || !(half_length > 0.))
+          throw std::runtime_error(
+            "subsection 'Mesh': a 'column' lies inside the box of 'Lower "
+            "corner' and 'Upper corner'; every coordinate of 'Upper corner' "
+            "must exceed that of 'Lower corner'.");
+        const unsigned int axial
+          = p.subdivisions.size() > 2 ? p.subdivisions[2] : 1;
+        GridGenerator::subdivided_cylinder(tria, axial, radius, half_length);
+        const Point<3> centre = 0.5 * (lower + upper);
+        GridTools::transform(
+          [&](const Point<3> &q) {
+            return Point<3>(centre[0] + q[1],
+                            centre[1] + q[2],
+                            centre[2] + q[0]);
+          },
+          tria);
+        tria.reset_all_manifolds();
+        tria.set_all_manifold_ids(1);
+        tria.set_all_manifold_ids_on_boundary(0, 0);
+        tria.set_manifold(0,
+                          CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}),
+                                                 centre));
+        TransfiniteInterpolationManifold<3> cells;
+        cells.initialize(tria);
+        tria.set_manifold(1, cells);
+      }
+
+
 
       /**
        * deal.II's channel_with_cylinder has its axis at x = 0.2 and length
@@ -342,6 +394,14 @@ namespace particulate {
                 true);
               break;
             }
+          case MeshParameters::Type::column:
+            if constexpr (dim == 3)
+              make_column(p, serial);
+            else
+              throw std::runtime_error(
+                "subsection 'Mesh': a 'column' is a 3D mesh; a 2D run "
+                "takes a 'hyper rectangle' for a channel.");
+            break;
           case MeshParameters::Type::graded_rectangle:
             {
               const Point<dim> lower

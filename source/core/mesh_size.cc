@@ -48,6 +48,7 @@ namespace particulate {
         switch (type)
           {
             case MeshParameters::Type::hyper_rectangle:
+            case MeshParameters::Type::column:
               return "'Subdivisions' and 'Refinements'";
             case MeshParameters::Type::graded_rectangle:
               return "'Fine cell size', 'Grading ratio' and 'Refinements'";
@@ -69,6 +70,9 @@ namespace particulate {
             for (unsigned int d = 0; d < dim; ++d)
               cells *= d < p.subdivisions.size() ? p.subdivisions[d] : 1.;
             return cells;
+          case MeshParameters::Type::column:
+            // a five-cell disk per axial subdivision
+            return 5. * (p.subdivisions.size() > 2 ? p.subdivisions[2] : 1.);
           case MeshParameters::Type::graded_rectangle:
             for (unsigned int d = 0; d < dim; ++d)
               if (d < p.lower_corner.size() && d < p.upper_corner.size()

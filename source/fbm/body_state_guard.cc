@@ -207,18 +207,24 @@ namespace particulate {
         [&](const unsigned int d,
             const bool         positive,
             const unsigned int face) {
-          if (!domain.walls[face])
+          if (!domain.walls[face] || (domain.is_column() && d < 2 && face > 0))
             return;
-          const double wall = positive ? domain.upper[d] : domain.lower[d];
-          const double beyond
-            = positive ? extent.upper[d] - wall : wall - extent.lower[d];
+          const bool   mantle = domain.is_column() && d < 2;
+          const double wall   = positive ? domain.upper[d] : domain.lower[d];
+          const double beyond = mantle ? reach_from_axis(domain,
+                                                         body.shape(),
+                                                         body.orientation,
+                                                         body.position)
+                                           - domain.column_radius :
+                                positive ? extent.upper[d] - wall :
+                                           wall - extent.lower[d];
           if (beyond <= tolerance)
             return;
           std::ostringstream message;
           message << "Particle " << i << " crossed the wall "
-                  << face_names[face] << " at t = " << t << " s: it reaches "
-                  << beyond << " m beyond it, more than the tolerance "
-                  << tolerance
+                  << (mantle ? "mantle" : face_names[face]) << " at t = " << t
+                  << " s: it reaches " << beyond
+                  << " m beyond it, more than the tolerance " << tolerance
                   << " m (the contact distance, at least 1 % of its size). "
                      "Its contact with the wall failed at its speed of "
                   << body.linear_velocity.norm() << " m/s ("
@@ -248,6 +254,12 @@ namespace particulate {
             const unsigned int face) {
           if (domain.mirror_planes[face])
             return;
+          if (domain.is_column() && d < 2)
+            {
+              if (face == 0)
+                check_inside_column(body, i, t);
+              return;
+            }
           const double x       = body.position[d];
           const bool   outside = positive ? x > domain.upper[d] + tolerance :
                                             x < domain.lower[d] - tolerance;
@@ -264,6 +276,28 @@ namespace particulate {
                      "run ('End time') before the particle reaches it.";
           stop(message);
         });
+    }
+
+
+
+    void
+    BodyStateGuard::check_inside_column(const rigid::RigidBody &body,
+                                        const unsigned int      i,
+                                        const double            t) const
+    {
+      const double rho = domain.distance_from_axis(body.position);
+      if (rho <= domain.column_radius * (1. + 1e-9))
+        return;
+      std::ostringstream message;
+      message << "Particle " << i << " left the domain at t = " << t
+              << " s: its centre is " << rho
+              << " m from the column's axis, beyond the mantle at "
+              << domain.column_radius
+              << " m, which is not a wall. Make the mantle a wall with "
+                 "'Domain walls' in subsection 'Particles' ('mantle' or "
+                 "'all'), or end the run ('End time') before the particle "
+                 "reaches it.";
+      stop(message);
     }
 
 

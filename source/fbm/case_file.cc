@@ -3,6 +3,7 @@
 #include <particulate/core/mesh.h>
 #include <particulate/core/mesh_size.h>
 #include <particulate/fbm/case_file.h>
+#include <particulate/fbm/domain_box.h>
 #include <particulate/fbm/particle_set_checks.h>
 
 #include <deal.II/base/exceptions.h>
@@ -87,11 +88,9 @@ namespace particulate {
             low[d] = lower[d];
             up[d]  = upper[d];
           }
-        check_inside_box(parameters.particles.bodies,
-                         low,
-                         up,
-                         parameters.particles.symmetry_planes,
-                         dim);
+        check_inside_domain(
+          parameters.particles.bodies,
+          make_domain_box(flow.mesh, parameters.particles, low, up, dim));
         check_on_mirror_planes(parameters.particles.bodies,
                                low,
                                up,

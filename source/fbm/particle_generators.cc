@@ -163,13 +163,43 @@ namespace particulate {
 
 
 
+    double
+    RandomFill::region_size(const unsigned int dim) const
+    {
+      const Eigen::Vector3d size = upper - lower;
+      if (region == Region::cylinder)
+        {
+          if (dim != 3)
+            throw std::runtime_error("a 'cylinder' region is a 3D one; a 2D "
+                                     "fill takes a 'box'.");
+          const double radius = 0.5 * std::min(size[0], size[1]);
+          return M_PI * radius * radius * size[2];
+        }
+      return dim == 3 ? size.prod() : size[0] * size[1];
+    }
+
+
+
+    bool
+    RandomFill::inside_region(const Eigen::Vector3d &centre,
+                              const double           margin) const
+    {
+      if (region == Region::box)
+        return true;
+      const double radius
+        = 0.5 * std::min(upper[0] - lower[0], upper[1] - lower[1]);
+      return std::hypot(centre[0] - 0.5 * (lower[0] + upper[0]),
+                        centre[1] - 0.5 * (lower[1] + upper[1]))
+             <= radius - margin;
+    }
+
+
+
     unsigned int
     RandomFill::n_particles(const geometry::Shape &shape,
                             const unsigned int     dim) const
     {
-      const Eigen::Vector3d size   = upper - lower;
-      const double          region = dim == 3 ? size.prod() : size[0] * size[1];
-      const double          n      = solid_fraction * region / shape.volume();
+      const double n = solid_fraction * region_size(dim) / shape.volume();
       if (!(n <= maximum_generated_particles))
         throw std::runtime_error(
           "the solid fraction gives " + std::to_string(n)
@@ -217,7 +247,7 @@ namespace particulate {
                              + (upper[d] - lower[d] - 2. * margin) * uniform();
           const Eigen::Quaterniond q
             = random_orientation ? random_rotation(uniform, dim) : orientation;
-          if (grid.overlaps(ball, dim))
+          if (!inside_region(ball.centre, margin) || grid.overlaps(ball, dim))
             continue;
           grid.insert(ball);
           poses.emplace_back(q, ball.centre);

@@ -234,7 +234,9 @@ namespace particulate {
                         "walls of the rigid-body engine, so that particles "
                         "collide with the container: 'all', 'none', or a "
                         "list of x-, x+, y-, y+, z-, z+ (leave out symmetry "
-                        "planes).");
+                        "planes). The side of a 'column' mesh is one wall, "
+                        "'mantle' (the four faces x-, x+, y-, y+ together); "
+                        "a particle meets it as a tube around the column.");
       prm.declare_entry("Rigid substeps",
                         std::to_string(defaults.substeps),
                         Patterns::Integer(1),
@@ -335,6 +337,11 @@ namespace particulate {
             const auto &names = face_names;
             for (const std::string &w : Utilities::split_string_list(text, ','))
               {
+                if (w == "mantle" && dim == 3)
+                  {
+                    std::fill(faces.begin(), faces.begin() + 4, true);
+                    continue;
+                  }
                 const auto it = std::find(names.begin(), names.end(), w);
                 if (it == names.end()
                     || int(it - names.begin()) >= 2 * int(dim))
@@ -343,7 +350,8 @@ namespace particulate {
                          + std::to_string(dim)
                          + "D box; write 'all', 'none' or a list of x-, x+, "
                            "y-, y+"
-                         + (dim == 3 ? ", z-, z+." : "."));
+                         + (dim == 3 ? ", z-, z+ (mantle: a column's side)." :
+                                       "."));
                 faces[it - names.begin()] = true;
               }
           }

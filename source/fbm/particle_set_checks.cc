@@ -41,10 +41,13 @@ namespace particulate {
       }
 
       /** The face of the box (x-, x+, y-, ...) that the wall @p body, a
-       *  half-space whose outward normal points into the fluid, lies on. */
+       *  half-space whose outward normal points into the fluid, lies on;
+       *  "mantle" for the tube around a column. */
       std::string
       wall_face(const rigid::RigidBody &body)
       {
+        if (body.shape().is_bounded())
+          return "mantle"; // the only bounded wall: a column's tube
         Eigen::Vector3d n;
         body.shape().signed_distance(body.to_body(Eigen::Vector3d::Zero()), &n);
         n = body.rotation() * n;
@@ -138,13 +141,35 @@ namespace particulate {
 
 
 
+    namespace {
+      /** Refuse particle @p i where it reaches beyond a column's mantle. */
+      void
+      check_inside_column(const ParticleDescription &p,
+                          const unsigned int         i,
+                          const DomainBox           &domain)
+      {
+        const double reach
+          = reach_from_axis(domain, *p.shape, p.orientation, p.position);
+        if (reach <= domain.column_radius * (1. + 1e-9))
+          return;
+        std::ostringstream message;
+        message << p.origin << ": particle " << i
+                << " reaches outside the column: it reaches " << reach
+                << " m from the axis, the mantle is " << domain.column_radius
+                << " m from it. Move it inside.";
+        throw std::runtime_error(message.str());
+      }
+    } // namespace
+
+
+
     void
-    check_inside_box(const std::vector<ParticleDescription> &particles,
-                     const Eigen::Vector3d                  &lower,
-                     const Eigen::Vector3d                  &upper,
-                     const std::array<bool, 6>              &mirror_planes,
-                     const unsigned int                      dim)
+    check_inside_domain(const std::vector<ParticleDescription> &particles,
+                        const DomainBox                        &domain)
     {
+      const Eigen::Vector3d     &lower = domain.lower, &upper = domain.upper;
+      const std::array<bool, 6> &mirror_planes = domain.mirror_planes;
+      const unsigned int         dim           = domain.dim;
       const double tolerance = 1e-9 * (upper - lower).head(dim).norm();
       for (unsigned int i = 0; i < particles.size(); ++i)
         {
@@ -152,7 +177,9 @@ namespace particulate {
           const geometry::BoundingBox box
             = geometry::Pose(p.orientation, p.position)
                 .to_world(p.shape->bounding_box());
-          for (unsigned int d = 0; d < dim; ++d)
+          if (domain.is_column())
+            check_inside_column(p, i, domain);
+          for (unsigned int d = domain.is_column() ? 2 : 0; d < dim; ++d)
             {
               // wider than the domain along an axis without a mirror plane:
               // no position fits it

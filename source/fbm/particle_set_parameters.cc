@@ -337,11 +337,20 @@ namespace particulate {
                           "",
                           Patterns::Anything(),
                           "Upper corner [m] of that box.");
+        prm.declare_entry("Region",
+                          "box",
+                          Patterns::Selection("box|cylinder"),
+                          "What the particles fill: 'box', or 'cylinder', "
+                          "the circular cylinder along z inscribed in the "
+                          "box (axis through the centre of its x-y "
+                          "rectangle, radius half the rectangle's shorter "
+                          "side; 3D), e.g. the part of a 'column' mesh "
+                          "between two heights.");
         prm.declare_entry("Solid fraction",
                           "0.1",
                           Patterns::Double(0., 1.),
                           "Volume (2D: area) of the particles over that of "
-                          "the box: the number of particles.");
+                          "the region: the number of particles.");
         prm.declare_entry("Seed",
                           "1",
                           Patterns::Integer(0),
@@ -352,7 +361,7 @@ namespace particulate {
                           Patterns::Double(0.),
                           "Smallest gap [m] the fill leaves between its "
                           "particles, and between them, the particles placed "
-                          "before it and the faces of its box (measured "
+                          "before it and the boundary of its region (measured "
                           "between the balls that hold the particles). A run "
                           "refuses particles that start closer than "
                           "'Contact distance': give at least that.");
@@ -382,6 +391,9 @@ namespace particulate {
         fill.upper              = internal::read_vector(prm.get("Upper corner"),
                                            dim,
                                            place("Upper corner"));
+        fill.region             = prm.get("Region") == "cylinder" ?
+                                    RandomFill::Region::cylinder :
+                                    RandomFill::Region::box;
         fill.solid_fraction     = prm.get_double("Solid fraction");
         fill.seed               = prm.get_integer("Seed");
         fill.clearance          = prm.get_double("Clearance");

@@ -1,5 +1,6 @@
 #include <particulate/fbm/particle_world.h>
 #include <particulate/geometry/half_space.h>
+#include <particulate/geometry/tube.h>
 
 #include <map>
 #include <stdexcept>
@@ -7,14 +8,35 @@
 namespace particulate {
   namespace fbm {
     namespace {
+      /** The mantle of a column @p domain as a fixed tube, its bore the
+       *  column, its ends a radius beyond the column's. */
+      void
+      add_mantle(rigid::World      &world,
+                 const DomainBox   &domain,
+                 const unsigned int material)
+      {
+        const double R = domain.column_radius;
+        world.add_body(std::make_shared<geometry::Tube>(
+                         R,
+                         R,
+                         0.5 * (domain.upper[2] - domain.lower[2]) + R),
+                       material,
+                       0.5 * (domain.lower + domain.upper),
+                       Eigen::Quaterniond::Identity(),
+                       true);
+      }
+
       /** The walls of @p domain that the case marks, as fixed half-spaces
-       *  {n.p <= offset} with n pointing into the domain. */
+       *  {n.p <= offset} with n pointing into the domain, and a column's
+       *  mantle. */
       void
       add_walls(rigid::World      &world,
                 const DomainBox   &domain,
                 const unsigned int material)
       {
-        for (unsigned int d = 0; d < domain.dim; ++d)
+        if (domain.is_column() && domain.walls[0])
+          add_mantle(world, domain, material);
+        for (unsigned int d = domain.is_column() ? 2 : 0; d < domain.dim; ++d)
           {
             Eigen::Vector3d n = Eigen::Vector3d::Zero();
             n[d]              = 1.;

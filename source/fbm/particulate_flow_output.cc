@@ -69,6 +69,9 @@ namespace particulate {
                                                  const double time)
     {
       shared_files = parameters.shares_particle_files(n_bodies);
+      // the walls come after the particles in the engine
+      body_output.leave_out_from(n_bodies);
+      surface_output.leave_out_from(n_bodies);
       const std::vector<std::string> columns{"time",
                                              "x",
                                              "y",

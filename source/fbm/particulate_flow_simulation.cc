@@ -81,7 +81,8 @@ namespace particulate {
         , checkpoint(parameters.flow.output.directory, comm)
       {}
 
-      Point<dim> box_lower, box_upper;
+      /// the mesh's box, a column's radius, walls and mirror planes
+      DomainBox domain;
       /// 2 per mirror plane: the loads and energies of the whole set-up
       unsigned int n_images = 1;
       /// per particle: its motion where it is prescribed, else null
@@ -284,20 +285,18 @@ namespace particulate {
       Run        &r          = *run_;
       const auto &particle_p = parameters.particles;
       r.create_mesh();
-      std::tie(r.box_lower, r.box_upper)
+      const auto [box_lower, box_upper]
         = core::global_bounding_box(r.tria, communicator);
       Eigen::Vector3d lower = Eigen::Vector3d::Zero(),
                       upper = Eigen::Vector3d::Zero();
       for (unsigned int d = 0; d < dim; ++d)
         {
-          lower[d] = r.box_lower[d];
-          upper[d] = r.box_upper[d];
+          lower[d] = box_lower[d];
+          upper[d] = box_upper[d];
         }
-      check_inside_box(particle_p.bodies,
-                       lower,
-                       upper,
-                       particle_p.symmetry_planes,
-                       dim);
+      r.domain
+        = make_domain_box(parameters.flow.mesh, particle_p, lower, upper, dim);
+      check_inside_domain(particle_p.bodies, r.domain);
       check_on_mirror_planes(particle_p.bodies,
                              lower,
                              upper,
@@ -351,17 +350,10 @@ namespace particulate {
       Run               &r          = *run_;
       const auto        &particle_p = parameters.particles;
       ParticleWorldFrame frame;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          frame.domain.lower[d] = r.box_lower[d];
-          frame.domain.upper[d] = r.box_upper[d];
-        }
-      frame.domain.walls         = particle_p.walls;
-      frame.domain.mirror_planes = particle_p.symmetry_planes;
-      frame.domain.dim           = dim;
-      frame.contact_offset       = particle_p.contact_distance ?
-                                     *particle_p.contact_distance :
-                                     core::smallest_cell_edge(r.tria, communicator);
+      frame.domain         = r.domain;
+      frame.contact_offset = particle_p.contact_distance ?
+                               *particle_p.contact_distance :
+                               core::smallest_cell_edge(r.tria, communicator);
       // the weight enters as (rho_p - rho_f) V g through RigidBodyUpdate;
       // the engine integrates a free particle with the added mass m + m_a
       frame.gravity       = Eigen::Vector3d::Zero();

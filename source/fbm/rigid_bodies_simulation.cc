@@ -130,19 +130,19 @@ namespace particulate {
       core::create_mesh(parameters.flow.mesh, r.tria);
       const auto [lower, upper]
         = core::global_bounding_box(r.tria, communicator);
+      Eigen::Vector3d box_lower = Eigen::Vector3d::Zero(),
+                      box_upper = Eigen::Vector3d::Zero();
       for (unsigned int d = 0; d < dim; ++d)
         {
-          r.domain.lower[d] = lower[d];
-          r.domain.upper[d] = upper[d];
+          box_lower[d] = lower[d];
+          box_upper[d] = upper[d];
         }
-      r.domain.walls         = particles.walls;
-      r.domain.mirror_planes = particles.symmetry_planes;
-      r.domain.dim           = dim;
-      check_inside_box(particles.bodies,
-                       r.domain.lower,
-                       r.domain.upper,
-                       particles.symmetry_planes,
-                       dim);
+      r.domain = make_domain_box(parameters.flow.mesh,
+                                 particles,
+                                 box_lower,
+                                 box_upper,
+                                 dim);
+      check_inside_domain(particles.bodies, r.domain);
 
       std::vector<BodyStart> starts;
       for (const ParticleDescription &p : particles.bodies)

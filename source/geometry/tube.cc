@@ -14,8 +14,8 @@ namespace particulate {
       , w(wall_thickness)
       , hh(half_length)
     {
-      if (!(inner_radius > 0.) || !(wall_thickness > 0.)
-          || !(half_length > 0.) || !std::isfinite(inner_radius + wall_thickness + half_length))
+      if (!(inner_radius > 0.) || !(wall_thickness > 0.) || !(half_length > 0.)
+          || !std::isfinite(inner_radius + wall_thickness + half_length))
         throw GeometryError("Tube: need a bore radius, a wall thickness and a "
                             "half length that are positive and finite.");
     }
@@ -38,11 +38,11 @@ namespace particulate {
       if (d_rho > 0. || d_z > 0.)
         {
           const double o_rho = std::max(d_rho, 0.), o_z = std::max(d_z, 0.);
-          const double d     = std::hypot(o_rho, o_z);
+          const double d = std::hypot(o_rho, o_z);
           if (normal)
-            *normal = (s_rho * o_rho * radial
-                       + Eigen::Vector3d(0., 0., s_z * o_z))
-                      / d;
+            *normal
+              = (s_rho * o_rho * radial + Eigen::Vector3d(0., 0., s_z * o_z))
+                / d;
           return d;
         }
       if (normal)
@@ -97,7 +97,7 @@ namespace particulate {
       // Four rings of n vertices: bore bottom, bore top, outer top, outer
       // bottom; consecutive rings joined by quadrilaterals facing out of the
       // wall (into the bore, up, outwards, down).
-      const int                    n = 64;
+      const int                    n  = 64;
       const double                 ro = ri + w;
       std::vector<Eigen::Vector3d> vertices;
       for (const auto &[radius, z] : {std::pair{ri, -hh},
@@ -107,7 +107,9 @@ namespace particulate {
         for (int k = 0; k < n; ++k)
           {
             const double a = 2. * M_PI * k / n;
-            vertices.emplace_back(radius * std::cos(a), radius * std::sin(a), z);
+            vertices.emplace_back(radius * std::cos(a),
+                                  radius * std::sin(a),
+                                  z);
           }
       std::vector<std::array<int, 3>> triangles;
       for (int ring = 0; ring < 4; ++ring)

@@ -1,5 +1,6 @@
 #include <particulate/rigid/body_surface_writer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -205,7 +206,7 @@ namespace particulate {
     BodySurfaceWriter::write_one_file(const World &world)
     {
       std::vector<PlacedSurface> surfaces;
-      for (BodyId i = 0; i < world.n_bodies(); ++i)
+      for (BodyId i = 0; i < std::min(world.n_bodies(), first_left_out); ++i)
         if (world.body(i).shape().is_bounded())
           surfaces.push_back(
             place(world.body(i), i, display_mesh(world.body(i))));
@@ -225,7 +226,7 @@ namespace particulate {
       const std::string  folder = std::filesystem::path(prefix).filename();
       std::ostringstream blocks;
       unsigned int       block = 0;
-      for (BodyId i = 0; i < world.n_bodies(); ++i)
+      for (BodyId i = 0; i < std::min(world.n_bodies(), first_left_out); ++i)
         if (world.body(i).shape().is_bounded())
           {
             PvdSeries        &own   = body_series(i);

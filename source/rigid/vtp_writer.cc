@@ -1,5 +1,6 @@
 #include <particulate/rigid/vtp_writer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -22,7 +23,7 @@ namespace particulate {
         throw std::runtime_error("rigid::VtpWriter: cannot open '" + name
                                  + "' for writing; does the folder exist?");
       std::vector<BodyId> ids;
-      for (BodyId i = 0; i < world.n_bodies(); ++i)
+      for (BodyId i = 0; i < std::min(world.n_bodies(), first_left_out); ++i)
         if (std::isfinite(world.body(i).bounding_radius()))
           ids.push_back(i);
       const std::size_t n = ids.size();

@@ -183,6 +183,24 @@ namespace {
     checker.check(spaced.size() == 191 && closest >= 0.02 * (1. - 1e-12),
                   "random fill: 191 balls, none closer than the clearance "
                   "0.02 to another or to the box");
+    // the cylinder inscribed in the box: pi 0.5^2 of its volume, every
+    // ball the clearance inside the mantle
+    fill.region       = fbm::RandomFill::Region::cylinder;
+    const auto column = fill.place(ball, 3, Eigen::Quaterniond::Identity(), {});
+    double     mantle_gap = std::numeric_limits<double>::max();
+    for (const auto &pose : column)
+      mantle_gap = std::min(mantle_gap,
+                            0.5 - 0.05
+                              - std::hypot(pose.translation()[0] - 0.5,
+                                           pose.translation()[1] - 0.5));
+    std::cout << "random fill of the cylinder: " << column.size()
+              << " balls, closest gap to the mantle " << mantle_gap
+              << std::endl;
+    checker.check(column.size() == 150 && mantle_gap >= 0.02 * (1. - 1e-12),
+                  "random fill of the cylinder: round(0.1 pi 0.25 / (4/3 pi "
+                  "0.05^3)) = 150 balls, none closer than the clearance to "
+                  "the mantle");
+    fill.region         = fbm::RandomFill::Region::box;
     fill.clearance      = 0.;
     fill.solid_fraction = 0.45;
     bool refused        = false;
@@ -235,18 +253,29 @@ namespace {
     // the box turned by 45 degrees reaches 0.1 sqrt(2) from its centre
     brick.orientation = Eigen::AngleAxisd(M_PI / 4., Eigen::Vector3d::UnitZ());
     brick.position[0] = 0.1 * std::sqrt(2.) + 1e-6;
-    const std::array<bool, 6> none{};
-    const Eigen::Vector3d     zero = Eigen::Vector3d::Zero(),
-                          one      = Eigen::Vector3d::Ones();
-    checker.check(!refused([&]() {
-      fbm::check_inside_box({brick}, zero, one, none, 3);
-    }),
+    fbm::DomainBox unit_box;
+    unit_box.upper = Eigen::Vector3d::Ones();
+    checker.check(!refused(
+                    [&]() { fbm::check_inside_domain({brick}, unit_box); }),
                   "a turned box just inside the domain is accepted");
     brick.position[0] -= 2e-6;
-    checker.check(refused([&]() {
-                    fbm::check_inside_box({brick}, zero, one, none, 3);
-                  }),
+    checker.check(refused(
+                    [&]() { fbm::check_inside_domain({brick}, unit_box); }),
                   "a turned box whose corner leaves the domain is refused");
+    // the column of radius 0.5 about the vertical axis through (0.5, 0.5)
+    fbm::DomainBox column         = unit_box;
+    column.column_radius          = 0.5;
+    fbm::ParticleDescription ball = brick;
+    ball.shape                    = std::make_shared<geometry::Sphere>(0.1);
+    ball.orientation              = Eigen::Quaterniond::Identity();
+    ball.position = Eigen::Vector3d(0.5 + 0.4 / std::sqrt(2.) - 1e-6,
+                                    0.5 + 0.4 / std::sqrt(2.),
+                                    0.5);
+    checker.check(!refused([&]() { fbm::check_inside_domain({ball}, column); }),
+                  "a sphere just inside a column's mantle is accepted");
+    ball.position[0] += 2e-6;
+    checker.check(refused([&]() { fbm::check_inside_domain({ball}, column); }),
+                  "a sphere reaching 1 um beyond the mantle is refused");
     checker.check(!refused([&]() { fbm::check_no_overlap(set, 3); }),
                   "the case's particles do not overlap");
   }

@@ -15,6 +15,7 @@
 #include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include "solution_error.h"
 #include "test_utilities.h"
 
 using namespace dealii;
@@ -86,22 +87,10 @@ main(int argc, char **argv)
 
       FunctionParser<2> exact(3);
       exact.initialize("x,y", u1 + ";" + u2 + ";" + p, {{"pi", M_PI}});
-      Vector<double> cellwise(tria.n_active_cells());
-      const auto     error = [&](const unsigned int first,
-                             const unsigned int last) {
-        const ComponentSelectFunction<2> mask(std::make_pair(first, last), 3);
-        VectorTools::integrate_difference(flow.get_mapping(),
-                                          flow.get_dof_handler(),
-                                          flow.get_solution(),
-                                          exact,
-                                          cellwise,
-                                          QGauss<2>(5),
-                                          VectorTools::L2_norm,
-                                          &mask);
-        return VectorTools::compute_global_error(tria,
-                                                 cellwise,
-                                                 VectorTools::L2_norm);
-      };
+      const auto error
+        = [&](const unsigned int first, const unsigned int last) {
+            return testing::l2_error(flow, exact, first, last, 5);
+          };
       h.push_back(1. / (2 << refinements));
       velocity_error.push_back(error(0, 2));
       pressure_error.push_back(error(2, 3));

@@ -56,7 +56,7 @@ namespace {
         const Eigen::Vector3d p(coordinate(random),
                                 coordinate(random),
                                 3. * coordinate(random));
-        Eigen::Vector3d n;
+        Eigen::Vector3d       n;
         tube.signed_distance(p, &n);
         Eigen::Vector3d gradient;
         for (int d = 0; d < 3; ++d)
@@ -110,23 +110,20 @@ namespace {
   void
   check_spheres_stay_in_the_bore(const ContactSolverType type)
   {
-    World                                  w = container(type,
-                              Eigen::Vector3d(0., 0., -9.81),
-                              0.);
-    const double                           r = 0.008;
-    std::mt19937                           random(3);
+    World        w = container(type, Eigen::Vector3d(0., 0., -9.81), 0.);
+    const double r = 0.008;
+    std::mt19937 random(3);
     std::uniform_real_distribution<double> unit(-1., 1.);
     std::vector<BodyId>                    spheres;
     for (int i = 0; i < 40; ++i)
       {
         // four to a layer, the layers 2.5 radii apart and turned
-        const double a = M_PI / 2. * (i % 4) + 0.4 * (i / 4);
-        const BodyId id
-          = w.add_body(std::make_shared<Sphere>(r),
-                       0,
-                       Eigen::Vector3d(0.03 * std::cos(a),
-                                       0.03 * std::sin(a),
-                                       0.02 + 2.5 * r * (i / 4)));
+        const double a  = M_PI / 2. * (i % 4) + 0.4 * (i / 4);
+        const BodyId id = w.add_body(std::make_shared<Sphere>(r),
+                                     0,
+                                     Eigen::Vector3d(0.03 * std::cos(a),
+                                                     0.03 * std::sin(a),
+                                                     0.02 + 2.5 * r * (i / 4)));
         w.body(id).linear_velocity
           = Eigen::Vector3d(unit(random), unit(random), 0.);
         spheres.push_back(id);
@@ -147,8 +144,8 @@ namespace {
         fastest = std::max(fastest, w.body(id).linear_velocity.norm());
         highest = std::max(highest, w.body(id).position[2]);
       }
-    std::cout << to_string(type) << ": deepest reach into the wall "
-              << deepest << " m, fastest sphere at the end " << fastest
+    std::cout << to_string(type) << ": deepest reach into the wall " << deepest
+              << " m, fastest sphere at the end " << fastest
               << " m/s, highest centre " << highest << " m\n";
     CHECK(deepest < 0.1 * r, "the spheres stay in the bore");
     CHECK(fastest < 0.01, "the spheres come to rest");
@@ -158,11 +155,10 @@ namespace {
   void
   check_bounce(const ContactSolverType type)
   {
-    World        w = container(type, Eigen::Vector3d::Zero(), 0.5);
-    const BodyId ball
-      = w.add_body(std::make_shared<Sphere>(0.01),
-                   0,
-                   Eigen::Vector3d(0., 0., 0.1));
+    World        w    = container(type, Eigen::Vector3d::Zero(), 0.5);
+    const BodyId ball = w.add_body(std::make_shared<Sphere>(0.01),
+                                   0,
+                                   Eigen::Vector3d(0., 0., 0.1));
     w.body(ball).linear_velocity = Eigen::Vector3d(1., 0., 0.);
     const double half_edge       = 0.01;
     const BodyId cube

@@ -18,6 +18,7 @@ namespace particulate {
       {
         hyper_rectangle,
         ball,
+        column,
         graded_rectangle,
         channel_with_cylinder,
         file

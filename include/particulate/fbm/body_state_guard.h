@@ -1,6 +1,7 @@
 #ifndef particulate_fbm_body_state_guard_h
 #define particulate_fbm_body_state_guard_h
 
+#include <particulate/fbm/domain_box.h>
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/rigid/world.h>
 
@@ -12,18 +13,6 @@
 
 namespace particulate {
   namespace fbm {
-    /** The box of the mesh and what its faces are to the bodies. */
-    struct DomainBox
-    {
-      Eigen::Vector3d lower = Eigen::Vector3d::Zero();
-      Eigen::Vector3d upper = Eigen::Vector3d::Zero();
-      /// faces x-, x+, y-, y+, z-, z+ that are walls of the rigid engine
-      std::array<bool, 6> walls{};
-      /// faces that are mirror planes of a symmetric set-up
-      std::array<bool, 6> mirror_planes{};
-      unsigned int        dim = 3;
-    };
-
     /**
      * The physical sanity checks of the bodies after each coupled step. A
      * run that fails one stops with a message saying what happened, to
@@ -101,6 +90,10 @@ namespace particulate {
                    const unsigned int      i,
                    const double            t) const;
       void
+      check_inside_column(const rigid::RigidBody &body,
+                          const unsigned int      i,
+                          const double            t) const;
+      void
       check_overlaps(const rigid::World &world, const double t) const;
 
       DomainBox                  domain;
@@ -132,6 +125,7 @@ namespace particulate {
     body_reach(const rigid::RigidBody &body,
                const unsigned int      d,
                const bool              positive);
+
   } // namespace fbm
 } // namespace particulate
 

@@ -68,9 +68,18 @@ namespace particulate {
      */
     struct RandomFill
     {
+      /** What the particles fill: the box, or the cylinder along z
+       *  inscribed in it (axis through the centre of its x-y rectangle,
+       *  radius half the rectangle's shorter side; 3D only). */
+      enum class Region
+      {
+        box,
+        cylinder
+      };
       Eigen::Vector3d lower              = Eigen::Vector3d::Zero(); ///< [m]
       Eigen::Vector3d upper              = Eigen::Vector3d::Zero(); ///< [m]
-      double          solid_fraction     = 0.;                      ///< [-]
+      Region          region             = Region::box;
+      double          solid_fraction     = 0.; ///< [-]
       unsigned int    seed               = 1;
       bool            random_orientation = false;
       /** Smallest gap [m] between the balls that hold the particles, and
@@ -94,6 +103,17 @@ namespace particulate {
       /** The number of particles the fill places. */
       unsigned int
       n_particles(const geometry::Shape &shape, const unsigned int dim) const;
+
+    private:
+      /** The volume (2D: area) of the region [m^3]. */
+      double
+      region_size(const unsigned int dim) const;
+
+      /** Whether a ball at @p centre, kept @p margin from the region's
+       *  boundary, lies in the cylinder (always for a box: the centre is
+       *  drawn inside its margin). */
+      bool
+      inside_region(const Eigen::Vector3d &centre, const double margin) const;
     };
   } // namespace fbm
 } // namespace particulate

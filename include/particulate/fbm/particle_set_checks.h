@@ -1,6 +1,7 @@
 #ifndef particulate_fbm_particle_set_checks_h
 #define particulate_fbm_particle_set_checks_h
 
+#include <particulate/fbm/domain_box.h>
 #include <particulate/fbm/particle_description.h>
 #include <particulate/rigid/world.h>
 
@@ -24,19 +25,18 @@ namespace particulate {
                      const unsigned int                      dim);
 
     /**
-     * Refuse a particle that reaches outside the box [lower, upper] of the
-     * mesh: its bounding box, placed, must lie inside, except across the
-     * faces that are @p mirror_planes (x-, x+, y-, y+, z-, z+), on which
-     * bodies of a symmetric set-up are cut. A 2D run checks x and y.
+     * Refuse a particle that reaches outside the @p domain: its bounding
+     * box, placed, must lie inside the mesh's box, except across the
+     * faces that are mirror planes (x-, x+, y-, y+, z-, z+), on which
+     * bodies of a symmetric set-up are cut; in a column, the body must
+     * also lie inside the mantle (reach_from_axis()). A 2D run checks x
+     * and y.
      * @throw std::runtime_error naming the particle and where it was
      *   described
      */
     void
-    check_inside_box(const std::vector<ParticleDescription> &particles,
-                     const Eigen::Vector3d                  &lower,
-                     const Eigen::Vector3d                  &upper,
-                     const std::array<bool, 6>              &mirror_planes,
-                     const unsigned int                      dim);
+    check_inside_domain(const std::vector<ParticleDescription> &particles,
+                        const DomainBox                        &domain);
 
     /**
      * Refuse a particle whose centre is off one of the @p mirror_planes

@@ -5,6 +5,7 @@
 #include <particulate/rigid/pvd_series.h>
 #include <particulate/rigid/world.h>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -67,6 +68,14 @@ namespace particulate {
         layout = l;
       }
 
+      /** Leave out the bodies from @p id on (the walls a case adds after
+       *  its particles); by default every bounded body is written. */
+      void
+      leave_out_from(const BodyId id)
+      {
+        first_left_out = id;
+      }
+
       /** The series of all bodies written so far (time, multiblock file),
        *  for a checkpoint. */
       const std::vector<std::pair<double, std::string>> &
@@ -111,9 +120,10 @@ namespace particulate {
       write_piece(const std::string                &name,
                   const std::vector<PlacedSurface> &surfaces);
 
-      const std::string           prefix;
-      PvdSeries                   series;
-      Layout                      layout;
+      const std::string prefix;
+      PvdSeries         series;
+      Layout            layout;
+      BodyId            first_left_out = std::numeric_limits<BodyId>::max();
       std::map<BodyId, PvdSeries> bodies;
       std::unordered_map<const geometry::Shape *,
                          std::pair<std::shared_ptr<const geometry::Shape>,

@@ -4,6 +4,7 @@
 #include <particulate/rigid/pvd_series.h>
 #include <particulate/rigid/world.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,14 @@ namespace particulate {
       std::string
       write(const World &world);
 
+      /** Leave out the bodies from @p id on (the walls a case adds after
+       *  its particles); by default every bounded body is written. */
+      void
+      leave_out_from(const BodyId id)
+      {
+        first_left_out = id;
+      }
+
       /** The series written so far (time, file), for a checkpoint. */
       const std::vector<std::pair<double, std::string>> &
       written() const
@@ -45,6 +54,7 @@ namespace particulate {
 
     private:
       PvdSeries series;
+      BodyId    first_left_out = std::numeric_limits<BodyId>::max();
     };
   } // namespace rigid
 } // namespace particulate
