@@ -18,8 +18,9 @@ namespace particulate {
             domain.lower[d] = mesh.lower_corner[d];
             domain.upper[d] = mesh.upper_corner[d];
           }
-        domain.column_radius = 0.5 * std::min(domain.upper[0] - domain.lower[0],
-                                              domain.upper[1] - domain.lower[1]);
+        domain.column_radius = 0.5
+                               * std::min(domain.upper[0] - domain.lower[0],
+                                          domain.upper[1] - domain.lower[1]);
         for (unsigned int d = 0; d < 2; ++d)
           {
             const double centre = 0.5 * (domain.lower[d] + domain.upper[d]);

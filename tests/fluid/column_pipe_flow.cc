@@ -36,8 +36,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                 checker;
-  const double mu = 0.1, U = 1., R = 0.5, L = 2.;
-  const std::string profile = "2*(1 - ((x-0.5)^2 + (y-0.5)^2)/0.25)";
+  const double                     mu = 0.1, U = 1., R = 0.5, L = 2.;
+  const std::string profile  = "2*(1 - ((x-0.5)^2 + (y-0.5)^2)/0.25)";
   const std::string pressure = "8*0.1*(1 - z)/0.25";
 
   std::vector<double> velocity_error, pressure_error;
@@ -78,10 +78,10 @@ main(int argc, char **argv)
 
       FunctionParser<3> exact(4);
       exact.initialize("x,y,z", "0; 0; " + profile + "; " + pressure, {});
-      const auto error = [&](const unsigned int first,
-                             const unsigned int last) {
-        return testing::l2_error(flow, exact, first, last, 4);
-      };
+      const auto error
+        = [&](const unsigned int first, const unsigned int last) {
+            return testing::l2_error(flow, exact, first, last, 4);
+          };
       velocity_error.push_back(error(0, 3));
       pressure_error.push_back(error(3, 4));
       const auto at = [&](const double z) {

@@ -21,28 +21,30 @@ namespace particulate {
      *  @p quadrature_points per direction. */
     template <int dim>
     double
-    l2_error(const fluid::NavierStokes<dim>  &flow,
-             const dealii::Function<dim>     &exact,
-             const unsigned int               first,
-             const unsigned int               last,
-             const unsigned int               quadrature_points)
+    l2_error(const fluid::NavierStokes<dim> &flow,
+             const dealii::Function<dim>    &exact,
+             const unsigned int              first,
+             const unsigned int              last,
+             const unsigned int              quadrature_points)
     {
-      const auto &tria = flow.get_dof_handler().get_triangulation();
+      const auto            &tria = flow.get_dof_handler().get_triangulation();
       dealii::Vector<double> cellwise(tria.n_active_cells());
       const dealii::ComponentSelectFunction<dim> mask(std::make_pair(first,
                                                                      last),
                                                       dim + 1);
-      dealii::VectorTools::integrate_difference(
-        flow.get_mapping(),
-        flow.get_dof_handler(),
-        flow.get_solution(),
-        exact,
-        cellwise,
-        dealii::QGauss<dim>(quadrature_points),
-        dealii::VectorTools::L2_norm,
-        &mask);
+      dealii::VectorTools::integrate_difference(flow.get_mapping(),
+                                                flow.get_dof_handler(),
+                                                flow.get_solution(),
+                                                exact,
+                                                cellwise,
+                                                dealii::QGauss<dim>(
+                                                  quadrature_points),
+                                                dealii::VectorTools::L2_norm,
+                                                &mask);
       return dealii::VectorTools::compute_global_error(
-        tria, cellwise, dealii::VectorTools::L2_norm);
+        tria,
+        cellwise,
+        dealii::VectorTools::L2_norm);
     }
   } // namespace testing
 } // namespace particulate
