@@ -52,7 +52,7 @@ def read_parameters(folder):
     return values
 
 
-def _decode_vtu_array(text, path):
+def _decode_vtu_array(text):
     """The values of one zlib-compressed binary VTU DataArray (deal.II's
     output) as float32. The base64 text starts with a header of uint32:
     number of blocks, block size, last block size, then the compressed size
@@ -82,7 +82,7 @@ def read_vtu(path, names=()):
     match = re.search(r"<Points>\s*<DataArray[^>]*>([^<]*)</DataArray>", text)
     if not match:
         sys.exit(f"{path}: no points")
-    points = _decode_vtu_array(match.group(1), path).reshape(-1, 3)
+    points = _decode_vtu_array(match.group(1)).reshape(-1, 3)
     arrays = {}
     for name in names:
         match = re.search(
@@ -90,7 +90,7 @@ def read_vtu(path, names=()):
             text)
         if not match:
             sys.exit(f"{path}: no point data '{name}'")
-        values = _decode_vtu_array(match.group(1), path)
+        values = _decode_vtu_array(match.group(1))
         arrays[name] = values.reshape(points.shape[0], -1)
     return points, arrays
 

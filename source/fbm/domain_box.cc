@@ -13,21 +13,21 @@ namespace particulate {
       void
       set_column(DomainBox &domain, const core::MeshParameters &mesh)
       {
+        const double radius
+          = 0.5
+            * std::min(mesh.upper_corner[0] - mesh.lower_corner[0],
+                       mesh.upper_corner[1] - mesh.lower_corner[1]);
         for (unsigned int d = 0; d < 2; ++d)
           {
-            domain.lower[d] = mesh.lower_corner[d];
-            domain.upper[d] = mesh.upper_corner[d];
+            const double centre
+              = 0.5 * (mesh.lower_corner[d] + mesh.upper_corner[d]);
+            domain.lower[d] = centre - radius;
+            domain.upper[d] = centre + radius;
           }
-        domain.column_radius = 0.5
-                               * std::min(domain.upper[0] - domain.lower[0],
-                                          domain.upper[1] - domain.lower[1]);
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            const double centre = 0.5 * (domain.lower[d] + domain.upper[d]);
-            domain.lower[d]     = centre - domain.column_radius;
-            domain.upper[d]     = centre + domain.column_radius;
-          }
+        domain.column_radius = radius;
       }
+
+
 
       /** A column's side is one surface: its four faces agree, and none
        *  is a mirror plane. */
