@@ -18,6 +18,9 @@ exits 1 unless
   --support-gap contact distances (default 2) of the floor, or it touches a
   body whose centre lies below its own within that gap.
 
+The floor is the mesh's lowest face, or the distributor at 'Distributor
+height' where the case has one (the bodies may not cross it either).
+
 The prm/quickstart case is checked this way (test fbm_quickstart_settles).
 """
 import argparse
@@ -71,8 +74,12 @@ def main():
     radius = np.array([r for r, _ in body])
     tolerance = 1e-9 * max(u - lo for u, lo in zip(upper, lower))
     failures = []
+    distributor = read_parameters(args.folder).get("Particles/Distributor height", "")
+    if distributor:
+        lower[-1] = float(distributor)
 
-    # inside the box at every step; a column: inside its mantle
+    # inside the box (raised to the distributor) at every step; a column:
+    # inside its mantle
     column = read_parameters(args.folder).get("Mesh/Type") == "column"
     if column:
         centre = [0.5 * (lower[d] + upper[d]) for d in range(2)]

@@ -210,7 +210,7 @@ namespace particulate {
           if (!domain.walls[face] || (domain.is_column() && d < 2 && face > 0))
             return;
           const bool   mantle = domain.is_column() && d < 2;
-          const double wall   = positive ? domain.upper[d] : domain.lower[d];
+          const double wall   = domain.wall_position(face);
           const double beyond = mantle ? reach_from_axis(domain,
                                                          body.shape(),
                                                          body.orientation,

@@ -1,9 +1,11 @@
+#include <particulate/core/parameter_text.h>
 #include <particulate/fbm/domain_box.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/geometry/pose.h>
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace particulate {
   namespace fbm {
@@ -48,6 +50,31 @@ namespace particulate {
               "the side of a 'column' mesh, which has no flat side: only "
               "z- and z+ can be mirror planes.");
       }
+
+
+
+      /** Raise the lowest wall of @p domain to the distributor at
+       *  @p height, which must lie inside the domain, on a wall. */
+      void
+      set_distributor(DomainBox &domain, const double height)
+      {
+        const unsigned int d    = domain.dim - 1;
+        const std::string  face = std::string(d == 2 ? "z" : "y") + "-";
+        if (!domain.walls[2 * d])
+          throw std::runtime_error(
+            "subsection 'Particles': 'Distributor height' raises the wall "
+            + face + " to the distributor, and " + face
+            + " is not among the 'Domain walls': add it.");
+        if (!(height > domain.lower[d] && height < domain.upper[d]))
+          throw std::runtime_error(
+            "subsection 'Particles': 'Distributor height' = "
+            + core::number_text(height) + " m lies outside the mesh, which "
+            + "spans " + core::number_text(domain.lower[d]) + " to "
+            + core::number_text(domain.upper[d]) + " m along "
+            + std::string(d == 2 ? "z" : "y")
+            + ": give a height between them, a few cells above the inflow.");
+        domain.distributor = height;
+      }
     } // namespace
 
 
@@ -70,6 +97,8 @@ namespace particulate {
           set_column(domain, mesh);
           check_column_faces(domain);
         }
+      if (particles.distributor_height)
+        set_distributor(domain, *particles.distributor_height);
       return domain;
     }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "entry_values.h"
@@ -237,6 +238,18 @@ namespace particulate {
                         "planes). The side of a 'column' mesh is one wall, "
                         "'mantle' (the four faces x-, x+, y-, y+ together); "
                         "a particle meets it as a tube around the column.");
+      prm.declare_entry(
+        "Distributor height",
+        "",
+        Patterns::Anything(),
+        "Height [m] of a fluidized bed's distributor, the porous plate "
+        "through which the liquid enters from below: the lowest wall of the "
+        "rigid-body engine (z-, y- in 2D; it must be one of 'Domain walls') "
+        "lies at this height instead of on the mesh's lowest face, so that "
+        "the particles rest on it while the liquid flows through it freely "
+        "from the inflow on that face. Keeps the particles away from the "
+        "inflow, whose velocity they would otherwise meet within a cell. "
+        "Empty: the wall lies on the mesh's face.");
       prm.declare_entry("Rigid substeps",
                         std::to_string(defaults.substeps),
                         Patterns::Integer(1),
@@ -326,6 +339,24 @@ namespace particulate {
               fail("Contact distance",
                    "'" + text + "' is neither 'auto' nor a length >= 0 in m.");
             contact_distance = value;
+          }
+      }
+      {
+        const std::string text = Utilities::trim(prm.get("Distributor height"));
+        distributor_height.reset();
+        if (!text.empty())
+          {
+            double value = std::numeric_limits<double>::quiet_NaN();
+            try
+              {
+                value = Utilities::string_to_double(text);
+              }
+            catch (...)
+              {}
+            if (!std::isfinite(value))
+              fail("Distributor height",
+                   "'" + text + "' is not a height in m (or leave it empty).");
+            distributor_height = value;
           }
       }
       const auto read_faces = [&](const std::string &entry) {

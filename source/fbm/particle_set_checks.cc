@@ -273,15 +273,26 @@ namespace particulate {
         if (gap < clearance * (1. - 1e-6))
           {
             std::ostringstream message;
-            message << describe(a) << " and " << describe(b) << " start " << gap
-                    << " m apart, closer than the contact distance "
-                    << clearance
-                    << " m that the rigid engine keeps between surfaces: "
-                       "it would push them apart in the first step. "
-                       "Space them at least that far apart (a random "
-                       "fill: its 'Clearance'), or set a smaller 'Contact "
-                       "distance' in subsection 'Particles' (a finer mesh "
-                       "lowers 'auto').";
+            if (gap < 0.)
+              message << describe(a) << " and " << describe(b) << " overlap by "
+                      << -gap << " m at the start"
+                      << (particle_of[a] < 0 || particle_of[b] < 0 ?
+                            " (the particle lies partly or wholly beyond the "
+                            "wall)" :
+                            "")
+                      << ". Move them apart by at least the contact "
+                         "distance "
+                      << clearance << " m.";
+            else
+              message << describe(a) << " and " << describe(b) << " start "
+                      << gap << " m apart, closer than the contact distance "
+                      << clearance
+                      << " m that the rigid engine keeps between surfaces: "
+                         "it would push them apart in the first step. "
+                         "Space them at least that far apart (a random "
+                         "fill: its 'Clearance'), or set a smaller 'Contact "
+                         "distance' in subsection 'Particles' (a finer mesh "
+                         "lowers 'auto').";
             throw std::runtime_error(message.str());
           }
       };

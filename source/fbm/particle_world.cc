@@ -41,19 +41,21 @@ namespace particulate {
             Eigen::Vector3d n = Eigen::Vector3d::Zero();
             n[d]              = 1.;
             if (domain.walls[2 * d])
-              world.add_body(
-                std::make_shared<geometry::HalfSpace>(n, domain.lower[d]),
-                material,
-                Eigen::Vector3d::Zero(),
-                Eigen::Quaterniond::Identity(),
-                true);
+              world.add_body(std::make_shared<geometry::HalfSpace>(
+                               n,
+                               domain.wall_position(2 * d)),
+                             material,
+                             Eigen::Vector3d::Zero(),
+                             Eigen::Quaterniond::Identity(),
+                             true);
             if (domain.walls[2 * d + 1])
-              world.add_body(
-                std::make_shared<geometry::HalfSpace>(-n, -domain.upper[d]),
-                material,
-                Eigen::Vector3d::Zero(),
-                Eigen::Quaterniond::Identity(),
-                true);
+              world.add_body(std::make_shared<geometry::HalfSpace>(
+                               -n,
+                               -domain.wall_position(2 * d + 1)),
+                             material,
+                             Eigen::Vector3d::Zero(),
+                             Eigen::Quaterniond::Identity(),
+                             true);
           }
       }
     } // namespace

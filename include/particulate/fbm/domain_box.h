@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace particulate {
   namespace fbm {
@@ -29,6 +30,21 @@ namespace particulate {
       /// x-y rectangle, and the faces x-, x+, y-, y+ stand for its mantle
       /// (a wall when they are)
       double column_radius = 0.;
+      /// where there is one, the height [m] of a fluidized bed's
+      /// distributor: the lowest wall (z-, y- in 2D) lies there instead
+      std::optional<double> distributor;
+
+      /** Where the wall of @p face (x-, x+, y-, y+, z-, z+ = 0..5) lies
+       *  along its axis: the box's face, the lowest one raised to the
+       *  distributor where there is one. */
+      double
+      wall_position(const unsigned int face) const
+      {
+        const unsigned int d = face / 2;
+        if (face % 2 == 1)
+          return upper[d];
+        return (distributor && d == dim - 1) ? *distributor : lower[d];
+      }
 
       /** Whether the domain is a column. */
       bool

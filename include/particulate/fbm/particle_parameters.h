@@ -77,10 +77,14 @@ namespace particulate {
       std::optional<double> contact_distance;
       /// faces of the mesh's bounding box that are walls for contacts, in
       /// the order x-, x+, y-, y+, z-, z+
-      std::array<bool, 6> walls    = {{true, true, true, true, true, true}};
-      unsigned int        substeps = 1;
-      ContainmentBackend  containment_backend = ContainmentBackend::automatic;
-      CoveredNodes        covered_nodes       = CoveredNodes::inside;
+      std::array<bool, 6> walls = {{true, true, true, true, true, true}};
+      /// height [m] of a fluidized bed's distributor: the lowest wall (z-,
+      /// y- in 2D) raised to it for the particles, while the liquid flows
+      /// through; empty: the wall lies on the mesh's face
+      std::optional<double> distributor_height;
+      unsigned int          substeps            = 1;
+      ContainmentBackend    containment_backend = ContainmentBackend::automatic;
+      CoveredNodes          covered_nodes       = CoveredNodes::inside;
       /// faces of the mesh's bounding box that are mirror planes of the
       /// set-up (x-, x+, y-, y+, z-, z+): the particles lie on them, and the
       /// loads integrated over the part of each body inside the mesh are
