@@ -83,13 +83,13 @@ def run_set_up(folder):
     }
 
 
-def inflow_velocity(values):
-    """u_0 from the 'Velocity constants' of the inflow."""
+def velocity_constant(folder, values, name):
+    """The constant `name` of the inflow's 'Velocity constants'."""
     for pair in values["Boundary conditions/Velocity constants"].split(","):
-        name, _, value = pair.partition("=")
-        if name.strip() == "u0":
+        key, _, value = pair.partition("=")
+        if key.strip() == name:
             return float(value)
-    sys.exit("the bed's 'Velocity constants' name no u0 (the inflow velocity)")
+    sys.exit(f"{folder}: the 'Velocity constants' name no {name}")
 
 
 def terminal_velocity(folder):
@@ -118,13 +118,7 @@ def held_terminal_velocity(folder):
     setup = run_set_up(folder)
     (bead,) = read_particle_series(folder, setup["ids"][:1])
     values = setup["values"]
-    speed = None
-    for pair in values["Boundary conditions/Velocity constants"].split(","):
-        name, _, value = pair.partition("=")
-        if name.strip() == "U":
-            speed = float(value)
-    if speed is None:
-        sys.exit(f"{folder}: the held bead's 'Velocity constants' name no U")
+    speed = velocity_constant(folder, values, "U")
     late = bead["time"] > 0.5 * bead["time"][-1]
     drag = float(np.mean(bead["F_z"][late]))
     with open(os.path.join(folder, "particle_set.csv")) as f:
@@ -143,22 +137,19 @@ def richardson_zaki(u_0, u_t):
     return 1 - (u_0 / u_t) ** (1 / RZ_INDEX)
 
 
-def bed_history(folder):
+def bed_history(setup, series):
     """t, h_b(t) and alpha(t) of the bed."""
-    setup = run_set_up(folder)
-    series = read_particle_series(folder, setup["ids"])
     t = series[0]["time"]
     heights = np.array([s["z"] for s in series]) - setup["floor"]
     h_b = 2 * heights.mean(axis=0)
     alpha = setup["volume"].sum() / (math.pi * setup["radius"] ** 2 * h_b)
-    return setup, np.column_stack([t, h_b, alpha])
+    return np.column_stack([t, h_b, alpha])
 
 
-def middle_slab(folder, setup, after):
+def middle_slab(setup, series, after):
     """The solid fraction of the middle half of the bed (the beads between
     a quarter and three quarters of h_b above the distributor) and their
     mean vertical velocity, each averaged over t > after."""
-    series = read_particle_series(folder, setup["ids"])
     t = series[0]["time"]
     heights = np.array([s["z"] for s in series]) - setup["floor"]
     w = np.array([s["w"] for s in series])
@@ -194,8 +185,10 @@ def analyse(bed, bead, held, after, doc):
               f"({100 * (u_held / THESIS_U_T - 1):+.1f} % against the thesis)")
         speeds.append(("held bead", u_held))
 
-    setup, history = bed_history(bed)
-    u_0 = inflow_velocity(setup["values"])
+    setup = run_set_up(bed)
+    series = read_particle_series(bed, setup["ids"])
+    history = bed_history(setup, series)
+    u_0 = velocity_constant(bed, setup["values"], "u0")
     t = history[:, 0]
     if after is None:
         after = 0.5 * t[-1]
@@ -219,7 +212,7 @@ def analyse(bed, bead, held, after, doc):
               f"({label}): alpha_rz = {alpha_rz:.4g}; simulated/rz - 1 = "
               f"{100 * (a_mean / alpha_rz - 1):+.1f} %")
 
-    slab_alpha, slab_w = middle_slab(bed, setup, after)
+    slab_alpha, slab_w = middle_slab(setup, series, after)
     print(f"  middle half of the bed over t > {after:.3g} s: alpha = {slab_alpha:.4g}, "
           f"beads' mean vertical velocity {slab_w:.4g} m/s")
     for label, inflow, speed in predictions[1:]:
