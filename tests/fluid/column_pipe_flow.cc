@@ -62,19 +62,10 @@ main(int argc, char **argv)
       const auto parameters
         = testing::parameters_from_text(text, "column_pipe_flow");
 
-      parallel::fullydistributed::Triangulation<3> tria(MPI_COMM_WORLD);
-      core::create_mesh(parameters.mesh, tria);
-      TimerOutput            timer(MPI_COMM_WORLD,
-                        std::cout,
-                        TimerOutput::never,
-                        TimerOutput::wall_times);
-      fluid::NavierStokes<3> flow(parameters.fluid, tria, timer);
-      flow.setup_dofs();
-      flow.set_initial_condition(0.);
-      const auto stats
-        = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
+      const testing::SteadyFlow<3> run(parameters);
+      const auto                  &flow = run.flow;
 
-      const double volume = GridTools::volume(tria, flow.get_mapping());
+      const double volume = GridTools::volume(run.tria, flow.get_mapping());
 
       FunctionParser<3> exact(4);
       exact.initialize("x,y,z", "0; 0; " + profile + "; " + pressure, {});
@@ -90,12 +81,12 @@ main(int argc, char **argv)
       const double drop = at(0.5) - at(1.5), exact_drop = 8. * mu * U / (R * R);
       const double volume_error = volume / (M_PI * R * R * L) - 1.;
       std::cout << "refinements " << refinements << "  cells "
-                << tria.n_global_active_cells() << "  DoFs " << flow.n_dofs()
-                << "  Newton " << stats.nonlinear_iterations
-                << "  volume error " << volume_error << "  ||u-u_h|| "
-                << velocity_error.back() << "  ||p-p_h|| "
-                << pressure_error.back() << "  pressure drop " << drop
-                << " (exact " << exact_drop << ")" << std::endl;
+                << run.tria.n_global_active_cells() << "  DoFs "
+                << flow.n_dofs() << "  Newton "
+                << run.stats.nonlinear_iterations << "  volume error "
+                << volume_error << "  ||u-u_h|| " << velocity_error.back()
+                << "  ||p-p_h|| " << pressure_error.back() << "  pressure drop "
+                << drop << " (exact " << exact_drop << ")" << std::endl;
       if (refinements == 3)
         {
           checker.check(std::abs(volume_error) < 1e-3,
@@ -105,11 +96,8 @@ main(int argc, char **argv)
         }
     }
 
-  const unsigned int n = velocity_error.size();
-  const double       rate_u
-    = std::log(velocity_error[n - 2] / velocity_error[n - 1]) / std::log(2.);
-  const double rate_p
-    = std::log(pressure_error[n - 2] / pressure_error[n - 1]) / std::log(2.);
+  const double rate_u = testing::last_rate(velocity_error);
+  const double rate_p = testing::last_rate(pressure_error);
   std::cout << "observed rates: velocity " << rate_u << ", pressure " << rate_p
             << std::endl;
   checker.check(rate_u > 2.5, "velocity L2 rate above 2.5");

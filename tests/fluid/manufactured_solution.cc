@@ -53,7 +53,7 @@ main(int argc, char **argv)
   testing::Checker                 checker;
   const double                     nu = 0.1;
 
-  std::vector<double> h, velocity_error, pressure_error;
+  std::vector<double> velocity_error, pressure_error;
   for (unsigned int refinements = 1; refinements <= 5; ++refinements)
     {
       const std::string text
@@ -73,17 +73,8 @@ main(int argc, char **argv)
       const auto parameters
         = testing::parameters_from_text(text, "manufactured_solution");
 
-      parallel::fullydistributed::Triangulation<2> tria(MPI_COMM_WORLD);
-      core::create_mesh(parameters.mesh, tria);
-      TimerOutput            timer(MPI_COMM_WORLD,
-                        std::cout,
-                        TimerOutput::never,
-                        TimerOutput::wall_times);
-      fluid::NavierStokes<2> flow(parameters.fluid, tria, timer);
-      flow.setup_dofs();
-      flow.set_initial_condition(0.);
-      const auto stats
-        = flow.advance(0., 0., core::TimeParameters::Scheme::steady);
+      const testing::SteadyFlow<2> run(parameters);
+      const auto                  &flow = run.flow;
 
       FunctionParser<2> exact(3);
       exact.initialize("x,y", u1 + ";" + u2 + ";" + p, {{"pi", M_PI}});
@@ -91,21 +82,17 @@ main(int argc, char **argv)
         = [&](const unsigned int first, const unsigned int last) {
             return testing::l2_error(flow, exact, first, last, 5);
           };
-      h.push_back(1. / (2 << refinements));
       velocity_error.push_back(error(0, 2));
       pressure_error.push_back(error(2, 3));
       std::cout << "h = 1/" << (2 << refinements) << "  DoFs " << flow.n_dofs()
-                << "  Newton " << stats.nonlinear_iterations << "  ||u-u_h|| "
-                << velocity_error.back() << "  ||p-p_h|| "
+                << "  Newton " << run.stats.nonlinear_iterations
+                << "  ||u-u_h|| " << velocity_error.back() << "  ||p-p_h|| "
                 << pressure_error.back() << std::endl;
     }
 
   // rates between the two finest levels (the coarsest are pre-asymptotic)
-  const unsigned int n = h.size();
-  const double       rate_u
-    = std::log(velocity_error[n - 2] / velocity_error[n - 1]) / std::log(2.);
-  const double rate_p
-    = std::log(pressure_error[n - 2] / pressure_error[n - 1]) / std::log(2.);
+  const double rate_u = testing::last_rate(velocity_error);
+  const double rate_p = testing::last_rate(pressure_error);
   std::cout << "observed rates: velocity " << rate_u << ", pressure " << rate_p
             << std::endl;
   checker.check(rate_u > 2.8 && rate_u < 3.3,
