@@ -14,6 +14,7 @@ packages=(
   libdeal.ii-dev          # deal.II 9.4.1 with Trilinos, MPI, p4est, CGAL
   openmpi-bin libopenmpi-dev
   libeigen3-dev libcgal-dev
+  libgsl-dev              # monotone cubic interpolation of viscosity tables
   libboost-dev            # Boost.CRC: the checksums of checkpoints
   libcgal-demo            # CGAL's sample surface meshes (data.tar.gz)
   libbullet-dev           # only the rigid-body benchmark links Bullet

@@ -1,6 +1,7 @@
 #include <particulate/core/input_file.h>
 #include <particulate/fbm/case_file.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
+#include <particulate/fluid/tabulated_viscosity.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -49,6 +50,15 @@ namespace particulate {
         = std::filesystem::path(filename).parent_path().string();
       if (flow.mesh.base_directory.empty())
         flow.mesh.base_directory = ".";
+      // so is a viscosity table, read now so that a bad one stops the run
+      // before anything is built
+      std::string &table = flow.fluid.properties.viscosity_table;
+      if (!table.empty() && std::filesystem::path(table).is_relative())
+        table
+          = (std::filesystem::path(flow.mesh.base_directory) / table).string();
+      if (flow.fluid.properties.viscosity_model
+          == fluid::ViscosityModelType::table)
+        fluid::read_viscosity_table(table);
       particles.parse(prm, flow.simulation.dimension, outline);
       checkpoint.parse(prm);
       deformation.parse(prm);

@@ -15,6 +15,7 @@
 
 #include "momentum_operator.h"
 #include "velocity_jacobian_kernel.h"
+#include "viscous_newton_term.h"
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Vector.h>
 
@@ -34,9 +35,9 @@ namespace particulate {
      *          - (p, div v)
      *   R_p(q) = -(div u, q)
      *
-     * and the right-hand side is -R. The Jacobian freezes mu at the current
-     * iterate; the term rho (du.grad u, v) is the Newton part that the
-     * fixed-point (Oseen) iteration omits.
+     * and the right-hand side is -R. The terms rho (du.grad u, v) and mu's
+     * derivative through the shear rate (ViscousNewtonTerm) are the Newton
+     * parts that the fixed-point (Oseen) iteration omits.
      */
     template <int dim>
     void
@@ -169,9 +170,14 @@ namespace particulate {
                   ExcMessage("The Jacobian kernel is written for Q2 "
                              "velocities."));
       VelocityJacobianKernel<dim> jacobian_kernel(n_q);
-      const auto                  uu
+      // Newton with a shear-rate dependent viscosity adds mu's derivative
+      const bool viscous_newton = newton && variable_mu && assemble_matrix;
+      ViscousNewtonTerm<dim> viscous_newton_term(viscous_newton ? n_s : 0);
+      const auto             uu
         = [&](unsigned int c, unsigned int d, unsigned int a, unsigned int b) {
-            return jacobian_kernel(c, d, a, b);
+            return viscous_newton ? jacobian_kernel(c, d, a, b)
+                                      + viscous_newton_term(c, d, a, b) :
+                                    jacobian_kernel(c, d, a, b);
           };
       // B: (pressure k, component d, scalar b) -> -(psi_k, d_d phi_b)
       std::vector<double> block_pu(n_p * dim * n_s);
@@ -218,6 +224,8 @@ namespace particulate {
             cell_rhs = 0;
             if (assemble_matrix)
               std::fill(block_pu.begin(), block_pu.end(), 0.);
+            if (viscous_newton)
+              viscous_newton_term.reset();
 
             // each vector's cell values read once: every element read from
             // a Trilinos vector is a hash-table lookup of its index
@@ -264,9 +272,10 @@ namespace particulate {
                 for (unsigned int a = 0; a < n_s; ++a)
                   grad_phi[a] = fe_values.shape_grad(a, q);
 
-                const SymmetricTensor<2, dim> D  = symmetrize(grad_u[q]);
-                const double                  mu = viscosity_model->viscosity(
-                  variable_mu ? std::sqrt(2. * D * D) : 0.);
+                const SymmetricTensor<2, dim> D = symmetrize(grad_u[q]);
+                const double                  shear_rate
+                  = variable_mu ? std::sqrt(2. * D * D) : 0.;
+                const double   mu = viscosity_model->viscosity(shear_rate);
                 Tensor<1, dim> advecting = u[q];
                 if (has_mesh_velocity)
                   advecting -= w[q];
@@ -335,6 +344,12 @@ namespace particulate {
                       newton_term[c * dim + d]
                         = newton_weight * grad_u[q][c][d];
                   }
+                if (viscous_newton)
+                  viscous_newton_term.add(
+                    ti * 4. * viscosity_model->slope_over_shear_rate(shear_rate)
+                      * JxW,
+                    D,
+                    grad_phi);
                 jacobian_kernel.set_quadrature_point(q,
                                                      phi.data(),
                                                      gradient_rows.data(),

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 namespace particulate {
@@ -228,12 +229,17 @@ namespace particulate {
       summary.n_steps  = step;
       summary.end_time = t;
 
-      pcout << "\nFinal: c_D = " << summary.drag_coefficient
-            << "  c_L = " << summary.lift_coefficient
-            << "  (volume integral: c_D = " << summary.drag_coefficient_volume
-            << ", c_L = " << summary.lift_coefficient_volume << ")";
+      // the quantities the case asked for in subsection Forces
+      std::ostringstream final;
+      if (!forces.body_boundary_ids.empty())
+        final << "  c_D = " << summary.drag_coefficient
+              << "  c_L = " << summary.lift_coefficient
+              << "  (volume integral: c_D = " << summary.drag_coefficient_volume
+              << ", c_L = " << summary.lift_coefficient_volume << ")";
       if (has_pressure_points)
-        pcout << "  delta_p = " << summary.pressure_difference;
+        final << "  delta_p = " << summary.pressure_difference;
+      if (!final.str().empty())
+        pcout << "\nFinal:" << final.str();
       pcout << "\nResults are in " << dir << "/ (flow.pvd, flow.dat)"
             << std::endl;
       frame.finish(flow, summary);

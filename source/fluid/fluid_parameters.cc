@@ -34,7 +34,10 @@ namespace particulate {
 
       const core::ChoiceNames<ViscosityModelType> viscosity_model_names
         = {{ViscosityModelType::newtonian, "Newtonian"},
-           {ViscosityModelType::carreau, "Carreau"}};
+           {ViscosityModelType::carreau, "Carreau"},
+           {ViscosityModelType::cross, "Cross"},
+           {ViscosityModelType::power_law, "power law"},
+           {ViscosityModelType::table, "table"}};
       const core::ChoiceNames<NonlinearMethod> nonlinear_method_names
         = {{NonlinearMethod::newton, "Newton"},
            {NonlinearMethod::fixed_point, "fixed point"}};
@@ -150,28 +153,52 @@ namespace particulate {
                         core::number_text(defaults.dynamic_viscosity),
                         Patterns::Double(0.),
                         "Dynamic viscosity mu [Pa s] (NOT the kinematic "
-                        "viscosity nu = mu/rho). For the Carreau model this is "
+                        "viscosity nu = mu/rho). For Carreau and Cross it is "
                         "the zero-shear viscosity mu_0.");
       prm.declare_entry(
         "Viscosity model",
         to_string(defaults.viscosity_model),
         Patterns::Selection(core::selection_of(viscosity_model_names)),
-        "Newtonian: constant mu. Carreau: mu = mu_inf + (mu_0 - mu_inf) (1 + "
-        "(lambda gamma_dot)^2)^((n-1)/2), shear-thinning for n < 1 and "
-        "shear-thickening for n > 1.");
-      prm.declare_entry("Carreau infinite-shear viscosity",
-                        core::number_text(
-                          defaults.carreau_infinite_shear_viscosity),
+        "mu as a function of the shear rate g = sqrt(2 D:D). Newtonian: "
+        "constant mu. Carreau: mu_inf + (mu_0 - mu_inf) (1 + (lambda "
+        "g)^2)^((n-1)/2), shear-thinning for n < 1 and shear-thickening for "
+        "n > 1. Cross: mu_inf + (mu_0 - mu_inf) / (1 + (lambda g)^(1-n)), "
+        "shear-thinning (n < 1). power law: K max(g, g_min)^(n-1). table: "
+        "interpolated from 'Viscosity table'. Newton's method linearises the "
+        "viscosity's dependence on the shear rate as well.");
+      prm.declare_entry("Infinite-shear viscosity",
+                        core::number_text(defaults.infinite_shear_viscosity),
                         Patterns::Double(0.),
-                        "Carreau: mu_inf [Pa s].");
-      prm.declare_entry("Carreau relaxation time",
-                        core::number_text(defaults.carreau_relaxation_time),
+                        "Carreau and Cross: mu_inf [Pa s].");
+      prm.declare_entry("Relaxation time",
+                        core::number_text(defaults.relaxation_time),
                         Patterns::Double(0.),
-                        "Carreau: lambda [s].");
-      prm.declare_entry("Carreau exponent",
-                        core::number_text(defaults.carreau_exponent),
+                        "Carreau and Cross: lambda [s]; 1/lambda is the shear "
+                        "rate where the viscosity leaves mu_0.");
+      prm.declare_entry("Power-law index",
+                        core::number_text(defaults.power_law_index),
                         Patterns::Double(0.),
-                        "Carreau: power-law index n [-].");
+                        "Carreau, Cross and power law: n [-]; positive for "
+                        "Carreau and power law, in [0, 1) for Cross.");
+      prm.declare_entry("Consistency",
+                        core::number_text(defaults.consistency),
+                        Patterns::Double(0.),
+                        "power law: K [Pa s^n], the viscosity at g = 1/s.");
+      prm.declare_entry("Minimum shear rate",
+                        core::number_text(defaults.minimum_shear_rate),
+                        Patterns::Double(0.),
+                        "power law: g_min [1/s]. Below it the viscosity is "
+                        "constant, which keeps it finite at rest for n < 1 "
+                        "and positive for n > 1. Take it well below the "
+                        "flow's shear rates.");
+      prm.declare_entry("Viscosity table",
+                        defaults.viscosity_table,
+                        Patterns::Anything(),
+                        "table: a file of rows 'shear rate [1/s]  viscosity "
+                        "[Pa s]' ('#' starts a comment; a relative path "
+                        "starts at the case file's folder), shear rates "
+                        "increasing. Interpolated by a monotone cubic in "
+                        "log-log; beyond its ends the end's viscosity.");
       core::FunctionExpression::declare(prm,
                                         "Body force",
                                         "",
@@ -179,6 +206,33 @@ namespace particulate {
                                         "e.g. gravity '0; -9.81'.");
       prm.leave_subsection();
     }
+
+    void
+    FluidProperties::check_viscosity_model() const
+    {
+      if ((viscosity_model == ViscosityModelType::carreau
+           || viscosity_model == ViscosityModelType::power_law)
+          && !(power_law_index > 0.))
+        throw std::runtime_error(
+          "subsection 'Fluid': 'Power-law index' must be positive for the "
+          "Carreau and power laws: at n = 0 the stress stops growing with "
+          "the shear rate, and no flow is determined by it.");
+      if (viscosity_model == ViscosityModelType::cross
+          && !(power_law_index < 1.))
+        throw std::runtime_error(
+          "subsection 'Fluid': the Cross law is shear-thinning and needs "
+          "'Power-law index' below 1 (it is "
+          + core::number_text(power_law_index)
+          + "); for a shear-thickening fluid use 'Carreau' with n > 1, "
+            "'power law' or 'table'.");
+      if (viscosity_model == ViscosityModelType::table
+          && viscosity_table.empty())
+        throw std::runtime_error(
+          "subsection 'Fluid': 'Viscosity model = table' needs the file of "
+          "(shear rate, viscosity) rows in 'Viscosity table'.");
+    }
+
+
 
     void
     FluidProperties::parse(ParameterHandler &prm)
@@ -189,11 +243,14 @@ namespace particulate {
         = core::get_positive_double(prm, "Dynamic viscosity", "Fluid");
       viscosity_model
         = core::choice_named(viscosity_model_names, prm.get("Viscosity model"));
-      carreau_infinite_shear_viscosity
-        = prm.get_double("Carreau infinite-shear viscosity");
-      carreau_relaxation_time = prm.get_double("Carreau relaxation time");
-      carreau_exponent
-        = core::get_positive_double(prm, "Carreau exponent", "Fluid");
+      infinite_shear_viscosity = prm.get_double("Infinite-shear viscosity");
+      relaxation_time          = prm.get_double("Relaxation time");
+      power_law_index          = prm.get_double("Power-law index");
+      consistency = core::get_positive_double(prm, "Consistency", "Fluid");
+      minimum_shear_rate
+        = core::get_positive_double(prm, "Minimum shear rate", "Fluid");
+      viscosity_table = Utilities::trim(prm.get("Viscosity table"));
+      check_viscosity_model();
       body_force.parse(prm, "Body force");
       prm.leave_subsection();
     }

@@ -126,7 +126,19 @@ namespace particulate {
                 const VectorizedArray nu
                   = viscosity_per_point ? viscosity(cell, q) : nu_constant;
                 phi.submit_value(value, q);
-                phi.submit_gradient(nu * (G + transpose(G)), q);
+                Tensor<2, dim, VectorizedArray> flux = nu * (G + transpose(G));
+                // Newton: + theta_i 4 mu'/g (D*:D(u)) D*, D* = D(u*)
+                if (newton && viscosity_per_point)
+                  {
+                    const Tensor<2, dim, VectorizedArray> &G_star
+                      = iterate_gradient(cell, q);
+                    const Tensor<2, dim, VectorizedArray> D_star
+                      = VectorizedArray(0.5) * (G_star + transpose(G_star));
+                    flux
+                      += (viscosity_slope(cell, q) * scalar_product(D_star, G))
+                         * D_star;
+                  }
+                phi.submit_gradient(flux, q);
               }
             phi.integrate_scatter(EvaluationFlags::values
                                     | EvaluationFlags::gradients,
@@ -154,6 +166,9 @@ namespace particulate {
       Table<2, Tensor<2, dim, VectorizedArray>> iterate_gradient;
       /// theta_i mu(shear rate of u*) (shear-rate dependent viscosity only)
       Table<2, VectorizedArray> viscosity;
+      /// theta_i 4 mu'/g at the shear rate g of u* (shear-rate dependent
+      /// viscosity with Newton only)
+      Table<2, VectorizedArray> viscosity_slope;
 
       mutable VectorType source, destination;
     };
@@ -236,6 +251,9 @@ namespace particulate {
       m.iterate_gradient.reinit(newton ? n_cells : 0, newton ? n_q : 0);
       m.viscosity.reinit(m.viscosity_per_point ? n_cells : 0,
                          m.viscosity_per_point ? n_q : 0);
+      const bool viscosity_slope = newton && m.viscosity_per_point;
+      m.viscosity_slope.reinit(viscosity_slope ? n_cells : 0,
+                               viscosity_slope ? n_q : 0);
       for (unsigned int cell = 0; cell < n_cells; ++cell)
         {
           phi.reinit(cell);
@@ -258,9 +276,15 @@ namespace particulate {
               if (m.viscosity_per_point)
                 for (unsigned int lane = 0; lane < VectorizedArray::size();
                      ++lane)
-                  m.viscosity(cell, q)[lane]
-                    = theta_implicit
-                      * viscosity_model.viscosity(shear_rate<dim>(G, lane));
+                  {
+                    const double g = shear_rate<dim>(G, lane);
+                    m.viscosity(cell, q)[lane]
+                      = theta_implicit * viscosity_model.viscosity(g);
+                    if (viscosity_slope)
+                      m.viscosity_slope(cell, q)[lane]
+                        = theta_implicit * 4.
+                          * viscosity_model.slope_over_shear_rate(g);
+                  }
             }
         }
       m.linearised = true;
@@ -382,7 +406,9 @@ namespace particulate {
       return m.matrix_free.memory_consumption()
              + m.advecting.memory_consumption()
              + m.iterate_gradient.memory_consumption()
-             + m.viscosity.memory_consumption() + m.source.memory_consumption()
+             + m.viscosity.memory_consumption()
+             + m.viscosity_slope.memory_consumption()
+             + m.source.memory_consumption()
              + m.destination.memory_consumption();
     }
 

@@ -25,9 +25,11 @@ namespace particulate {
      *   (A u, v) = rho/k (u, v) + theta_i (2 mu D(u), D(v))
      *            + theta_i rho ((a.grad) u, v)
      *            + theta_i rho ((u.grad) u*, v)      (Newton only)
+     *            + theta_i 4 (mu'/g (D*:D(u)), D*:D(v))  (Newton only)
      *
      * with a = u* - w the advecting velocity of the linearisation point u*
-     * (w the ALE mesh velocity) and mu frozen at u*. It replaces the
+     * (w the ALE mesh velocity), mu and mu'/g taken at the shear rate g of
+     * u*, D* = D(u*) (see ViscosityModel). It replaces the
      * assembled block (0,0) as the outer FGMRES operator: the matrix costs
      * a full assembly per Newton step and 2 kB per DoF in 3D, the operator a
      * cell loop per product with sum factorisation (thesis eq. 5.14-5.16;
@@ -68,7 +70,8 @@ namespace particulate {
        * The stage's linearisation: @p velocity the iterate u* and
        * @p mesh_velocity w (nullptr: none), both in the velocity block
        * layout (locally owned entries are read). @p newton adds the
-       * derivative of the convection with respect to the advecting field.
+       * derivative of the convection with respect to the advecting field
+       * and that of the viscosity with respect to the shear rate.
        */
       void
       set_linearisation(

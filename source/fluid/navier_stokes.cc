@@ -166,6 +166,14 @@ namespace particulate {
 
       SolveStatistics stats;
       bool            newton = nl.method == NonlinearMethod::newton;
+      // A shear-rate dependent viscosity makes Newton fail from rest (the
+      // viscosity of fluid at rest is far from that of the flow), not only
+      // far from a Newtonian solution at high Reynolds numbers: there the
+      // stage returns to Newton once fixed-point steps have brought the
+      // residual below a tenth of where Newton failed.
+      const bool resume_newton
+        = newton && d.get_viscosity_model().depends_on_shear_rate();
+      double failed_newton_residual = 0.;
       // A stage nearly always needs at least one iteration: assembling the
       // first matrix with the initial residual saves a residual assembly.
       assemble_jacobian(stage, true, newton);
@@ -242,7 +250,11 @@ namespace particulate {
               // robust fixed-point linearisation for the rest of the stage.
               newton                 = false;
               stats.used_fixed_point = true;
+              failed_newton_residual = residual;
             }
+          else if (!newton && resume_newton
+                   && new_residual < 0.1 * failed_newton_residual)
+            newton = true;
           if (parameters.linear_solver.verbose)
             pcout << "      nonlinear iteration " << stats.nonlinear_iterations
                   << ": residual " << new_residual << " (" << linear_iterations

@@ -113,8 +113,8 @@ main(int argc, char **argv)
        {"DFG 2D-2 with a body force f(x, t) and a Carreau fluid",
         "subsection Fluid\n set Body force = 0.5 * sin(20 * t) + y; x * y\n"
         " set Viscosity model = Carreau\n"
-        " set Carreau infinite-shear viscosity = 1e-4\n"
-        " set Carreau relaxation time = 1\n set Carreau exponent = 0.6\n"
+        " set Infinite-shear viscosity = 1e-4\n"
+        " set Relaxation time = 1\n set Power-law index = 0.6\n"
         "end\n"}};
   for (unsigned int v = 0; v < dfg_variants.size(); ++v)
     {

@@ -191,17 +191,29 @@ namespace {
                 f.viscosity_model,
                 "Fluid: Viscosity model");
     check_equal(checker,
-                fluid.carreau_infinite_shear_viscosity,
-                f.carreau_infinite_shear_viscosity,
-                "Fluid: Carreau infinite-shear viscosity");
+                fluid.infinite_shear_viscosity,
+                f.infinite_shear_viscosity,
+                "Fluid: Infinite-shear viscosity");
     check_equal(checker,
-                fluid.carreau_relaxation_time,
-                f.carreau_relaxation_time,
-                "Fluid: Carreau relaxation time");
+                fluid.relaxation_time,
+                f.relaxation_time,
+                "Fluid: Relaxation time");
     check_equal(checker,
-                fluid.carreau_exponent,
-                f.carreau_exponent,
-                "Fluid: Carreau exponent");
+                fluid.power_law_index,
+                f.power_law_index,
+                "Fluid: Power-law index");
+    check_equal(checker,
+                fluid.consistency,
+                f.consistency,
+                "Fluid: Consistency");
+    check_equal(checker,
+                fluid.minimum_shear_rate,
+                f.minimum_shear_rate,
+                "Fluid: Minimum shear rate");
+    check_equal(checker,
+                fluid.viscosity_table,
+                f.viscosity_table,
+                "Fluid: Viscosity table");
 
     using N       = fluid::NonlinearSolverParameters;
     const auto nl = read_from_empty_file<N>(

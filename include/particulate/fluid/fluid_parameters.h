@@ -14,7 +14,10 @@ namespace particulate {
     enum class ViscosityModelType
     {
       newtonian,
-      carreau
+      carreau,
+      cross,
+      power_law,
+      table
     };
 
     /** 'Nonlinear solver / Method': the linearisation of convection. */
@@ -117,12 +120,15 @@ namespace particulate {
     struct FluidProperties
     {
       double density = 1.0; ///< rho [kg/m^3]
-      double dynamic_viscosity
-        = 1e-3; ///< mu [Pa s]; zero-shear value for Carreau
-      ViscosityModelType viscosity_model      = ViscosityModelType::newtonian;
-      double carreau_infinite_shear_viscosity = 0.; ///< mu_inf [Pa s]
-      double carreau_relaxation_time          = 1.; ///< lambda [s]
-      double carreau_exponent                 = 1.; ///< n [-]
+      /// mu [Pa s]; the zero-shear mu_0 for Carreau and Cross
+      double             dynamic_viscosity = 1e-3;
+      ViscosityModelType viscosity_model   = ViscosityModelType::newtonian;
+      double             infinite_shear_viscosity = 0.; ///< mu_inf [Pa s]
+      double             relaxation_time          = 1.; ///< lambda [s]
+      double             power_law_index          = 1.; ///< n [-]
+      double             consistency = 1e-3; ///< K [Pa s^n], power law
+      double      minimum_shear_rate = 1e-3; ///< [1/s], the power law's floor
+      std::string viscosity_table; ///< file of (shear rate, viscosity) rows
       core::FunctionExpression
         body_force; ///< f [m/s^2], acceleration (gravity)
 
@@ -130,6 +136,12 @@ namespace particulate {
       declare(dealii::ParameterHandler &prm);
       void
       parse(dealii::ParameterHandler &prm);
+
+    private:
+      /** Refuse a law whose entries contradict it (Cross with n >= 1, a
+       *  table without a file). */
+      void
+      check_viscosity_model() const;
     };
 
     /**

@@ -11,9 +11,15 @@ namespace particulate {
      * The dynamic viscosity as a function of the shear rate
      * gamma_dot = sqrt(2 D(u):D(u)). The assembly asks only this interface,
      * so a generalized-Newtonian law plugs in without touching the loops.
-     * The Newton linearisation treats mu as frozen at the current iterate
-     * (a Picard step in mu), which keeps the Jacobian's sparsity and is
-     * exact for Newtonian fluids.
+     *
+     * The Newton linearisation of the viscous stress 2 mu(gamma_dot) D(u)
+     * in the direction du is
+     *
+     *   2 mu D(du) + 4 (mu'(gamma_dot) / gamma_dot) (D(u):D(du)) D(u),
+     *
+     * since d gamma_dot = 2 D(u):D(du) / gamma_dot: the law supplies mu and
+     * mu'/gamma_dot, which stays finite at gamma_dot = 0 for the smooth
+     * laws and multiplies |D(u)|^2 where it does not.
      */
     class ViscosityModel
     {
@@ -24,6 +30,11 @@ namespace particulate {
       virtual double
       viscosity(const double shear_rate) const = 0;
 
+      /** mu'(gamma_dot) / gamma_dot [Pa s^3], 0 at gamma_dot = 0 where the
+       *  limit is not finite (the Newton term vanishes with D(u) there). */
+      virtual double
+      slope_over_shear_rate(const double shear_rate) const = 0;
+
       /** A representative viscosity for preconditioning [Pa s]. */
       virtual double
       reference_viscosity() const = 0;
@@ -32,7 +43,9 @@ namespace particulate {
       virtual bool
       depends_on_shear_rate() const = 0;
 
-      /** Build the model selected in subsection `Fluid`. */
+      /** Build the model selected in subsection `Fluid` (a table is read
+       *  from its file; std::runtime_error names the file and line of a
+       *  bad one). */
       static std::unique_ptr<ViscosityModel>
       create(const FluidProperties &properties);
     };
@@ -50,6 +63,11 @@ namespace particulate {
         return mu;
       }
       double
+      slope_over_shear_rate(const double) const override
+      {
+        return 0.;
+      }
+      double
       reference_viscosity() const override
       {
         return mu;
@@ -65,17 +83,22 @@ namespace particulate {
     };
 
     /**
-     * Carreau law mu = mu_inf + (mu_0 - mu_inf)(1 + (lambda g)^2)^((n-1)/2).
+     * A law between a zero-shear plateau mu_0 and an infinite-shear one
+     * mu_inf, with a relaxation time lambda and an index n: what Carreau
+     * and Cross share.
      */
-    class CarreauViscosity : public ViscosityModel
+    class PlateauViscosity : public ViscosityModel
     {
     public:
-      CarreauViscosity(const double mu_0,
+      PlateauViscosity(const double mu_0,
                        const double mu_inf,
                        const double lambda,
-                       const double n);
-      double
-      viscosity(const double shear_rate) const override;
+                       const double n)
+        : mu_0(mu_0)
+        , mu_inf(mu_inf)
+        , lambda(lambda)
+        , n(n)
+      {}
       double
       reference_viscosity() const override
       {
@@ -87,8 +110,68 @@ namespace particulate {
         return true;
       }
 
-    private:
+    protected:
       double mu_0, mu_inf, lambda, n;
+    };
+
+    /**
+     * Carreau law mu = mu_inf + (mu_0 - mu_inf)(1 + (lambda g)^2)^((n-1)/2):
+     * shear-thinning for n < 1, shear-thickening for n > 1.
+     */
+    class CarreauViscosity : public PlateauViscosity
+    {
+    public:
+      using PlateauViscosity::PlateauViscosity;
+      double
+      viscosity(const double shear_rate) const override;
+      double
+      slope_over_shear_rate(const double shear_rate) const override;
+    };
+
+    /**
+     * Cross law mu = mu_inf + (mu_0 - mu_inf) / (1 + (lambda g)^(1-n)), a
+     * shear-thinning law (0 <= n < 1) whose viscosity falls like g^(n-1)
+     * between its two plateaus.
+     */
+    class CrossViscosity : public PlateauViscosity
+    {
+    public:
+      using PlateauViscosity::PlateauViscosity;
+      double
+      viscosity(const double shear_rate) const override;
+      double
+      slope_over_shear_rate(const double shear_rate) const override;
+    };
+
+    /**
+     * Power law mu = K max(g, g_min)^(n-1). The floor g_min keeps mu
+     * finite at rest for n < 1 and positive for n > 1; below it the
+     * viscosity is constant.
+     */
+    class PowerLawViscosity : public ViscosityModel
+    {
+    public:
+      PowerLawViscosity(const double consistency,
+                        const double n,
+                        const double minimum_shear_rate);
+      double
+      viscosity(const double shear_rate) const override;
+      double
+      slope_over_shear_rate(const double shear_rate) const override;
+      /** K, the viscosity at a shear rate of 1/s. */
+      double
+      reference_viscosity() const override
+      {
+        return consistency;
+      }
+      bool
+      depends_on_shear_rate() const override
+      {
+        return true;
+      }
+
+    private:
+      double consistency, n, minimum_shear_rate;
     };
   } // namespace fluid
 } // namespace particulate
