@@ -230,16 +230,17 @@ namespace particulate {
       summary.end_time = t;
 
       // the quantities the case asked for in subsection Forces
-      std::ostringstream final;
+      std::ostringstream results;
       if (!forces.body_boundary_ids.empty())
-        final << "  c_D = " << summary.drag_coefficient
-              << "  c_L = " << summary.lift_coefficient
-              << "  (volume integral: c_D = " << summary.drag_coefficient_volume
-              << ", c_L = " << summary.lift_coefficient_volume << ")";
+        results << "  c_D = " << summary.drag_coefficient
+                << "  c_L = " << summary.lift_coefficient
+                << "  (volume integral: c_D = "
+                << summary.drag_coefficient_volume
+                << ", c_L = " << summary.lift_coefficient_volume << ")";
       if (has_pressure_points)
-        final << "  delta_p = " << summary.pressure_difference;
-      if (!final.str().empty())
-        pcout << "\nFinal:" << final.str();
+        results << "  delta_p = " << summary.pressure_difference;
+      if (!results.str().empty())
+        pcout << "\nFinal:" << results.str().substr(1);
       pcout << "\nResults are in " << dir << "/ (flow.pvd, flow.dat)"
             << std::endl;
       frame.finish(flow, summary);
