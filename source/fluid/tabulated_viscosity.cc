@@ -100,6 +100,8 @@ namespace particulate {
                < gsl_interp_type_min_size(gsl_interp_steffen))
         throw std::runtime_error("a viscosity table needs at least three "
                                  "rows of shear rate and viscosity");
+      lowest_shear_rate  = table.shear_rate.front();
+      highest_shear_rate = table.shear_rate.back();
       for (unsigned int i = 0; i < table.shear_rate.size(); ++i)
         {
           log_shear_rate.push_back(std::log(table.shear_rate[i]));
@@ -120,11 +122,11 @@ namespace particulate {
     {
       // beyond the ends (and at rest) the end's viscosity, with slope 0;
       // the clamp also keeps GSL from its out-of-range error handler
-      if (!(shear_rate > std::exp(log_shear_rate.front())))
+      if (!(shear_rate > lowest_shear_rate))
         return {log_viscosity.front(), 0.};
-      const double x = std::log(shear_rate);
-      if (x >= log_shear_rate.back())
+      if (shear_rate >= highest_shear_rate)
         return {log_viscosity.back(), 0.};
+      const double x = std::log(shear_rate);
       // no accelerator: the evaluation stays free of shared state
       return {gsl_interp_eval(interpolant->steffen,
                               log_shear_rate.data(),

@@ -59,6 +59,8 @@ namespace particulate {
       std::pair<double, double>
       log_viscosity_and_slope(const double shear_rate) const;
 
+      /// the table's ends [1/s], where the clamping starts
+      double              lowest_shear_rate = 0., highest_shear_rate = 0.;
       std::vector<double> log_shear_rate, log_viscosity;
       struct Interpolant;
       std::unique_ptr<Interpolant> interpolant;
