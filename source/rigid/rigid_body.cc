@@ -69,6 +69,27 @@ namespace particulate {
 
 
 
+    void
+    RigidBody::set_mass_properties(const double           mass,
+                                   const Eigen::Vector3d &principal_inertia)
+    {
+      if (fixed_)
+        throw std::invalid_argument(
+          "rigid::RigidBody::set_mass_properties(): a fixed body has no "
+          "mass to set.");
+      if (!(mass > 0.) || !std::isfinite(mass)
+          || !(principal_inertia.minCoeff() > 0.)
+          || !principal_inertia.allFinite())
+        throw std::invalid_argument(
+          "rigid::RigidBody::set_mass_properties(): the mass and the "
+          "principal moments must be positive and finite.");
+      inverse_mass_    = 1. / mass;
+      inertia_         = principal_inertia;
+      inverse_inertia_ = inertia_.cwiseInverse();
+    }
+
+
+
     double
     RigidBody::mass() const
     {

@@ -116,6 +116,7 @@ namespace particulate {
                            material,
                            materials_[material].density,
                            fixed);
+      collision_group_.push_back(0);
       RigidBody &b  = bodies_.back();
       b.position    = position;
       b.orientation = orientation.normalized();
@@ -225,11 +226,27 @@ namespace particulate {
 
 
 
+    void
+    World::set_collision_group(const BodyId id, const unsigned int group)
+    {
+      if (id >= bodies_.size())
+        throw std::invalid_argument(
+          "rigid::World::set_collision_group(): no body " + std::to_string(id)
+          + ".");
+      if (sphere_dem_)
+        hand_back_sphere_dem();
+      collision_group_[id] = group;
+      any_collision_group_ = any_collision_group_ || group != 0;
+    }
+
+
+
     bool
     World::sphere_fast_path_applies() const
     {
       if (parameters_.contact_solver != ContactSolverType::dem
-          || !parameters_.sphere_fast_path || n_general_only_ > 0)
+          || !parameters_.sphere_fast_path || n_general_only_ > 0
+          || any_collision_group_)
         return false;
       // rotation locks may be set at any time, through body()
       if (sphere_dem_ && !bodies_written_)
@@ -338,6 +355,16 @@ namespace particulate {
         }
       grid_.update(proxies_);
       grid_.find_pairs(pairs_);
+      if (any_collision_group_)
+        pairs_.erase(std::remove_if(pairs_.begin(),
+                                    pairs_.end(),
+                                    [this](const BodyPair &p) {
+                                      const unsigned int g
+                                        = collision_group_[p.first];
+                                      return g != 0
+                                             && g == collision_group_[p.second];
+                                    }),
+                     pairs_.end());
       graph_.update(pairs_, &dropped_);
     }
 

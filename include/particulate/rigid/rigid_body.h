@@ -124,6 +124,18 @@ namespace particulate {
       /** Mass in kg (infinity for fixed bodies). */
       double
       mass() const;
+      /**
+       * Replaces the mass and principal moments that the shape and density
+       * gave (a dynamic body only): for a body that stands for more than its
+       * shape, the head of an articulated assembly carrying its parts.
+       * @param mass in kg, positive
+       * @param principal_inertia in kg m^2 about the body axes, positive
+       * @throw std::invalid_argument for a fixed body or values that are
+       *   not positive and finite
+       */
+      void
+      set_mass_properties(double                 mass,
+                          const Eigen::Vector3d &principal_inertia);
       /** 1/mass in 1/kg (0 for fixed bodies). */
       double
       inverse_mass() const

@@ -128,6 +128,22 @@ namespace particulate {
                = Eigen::Quaterniond::Identity(),
                bool fixed = false);
 
+      /**
+       * Puts body @p id into collision group @p group: bodies of the same
+       * non-zero group never touch (the parts of one articulated body, which
+       * overlap where they are hinged). Group 0, every body's at first,
+       * collides with everything.
+       */
+      void
+      set_collision_group(BodyId id, unsigned int group);
+
+      /** The collision group of body @p id (0: none). */
+      unsigned int
+      collision_group(const BodyId id) const
+      {
+        return collision_group_.at(id);
+      }
+
       /** Number of bodies. */
       unsigned int
       n_bodies() const
@@ -277,6 +293,10 @@ namespace particulate {
       std::unique_ptr<SphereDem> sphere_dem_;
       /** Bodies that the sphere-only path cannot take (by shape). */
       unsigned int n_general_only_ = 0;
+      /** Each body's collision group (0: none). */
+      std::vector<unsigned int> collision_group_;
+      /** Some body is in a non-zero group (the sphere-only path has none). */
+      bool any_collision_group_ = false;
       /** Smallest effective contact mass of a dynamic body in kg (DEM). */
       double smallest_contact_mass_ = std::numeric_limits<double>::infinity();
       mutable ContactGraph           graph_snapshot_;
