@@ -248,9 +248,10 @@ namespace particulate {
       // stages of a time step (same bodies, new Dirichlet times) reuse it.
       // All ranks search when one's nodes changed: the pockets are found
       // together.
-      if (Utilities::MPI::logical_or(prescribed
-                                       != decoupled_pressures_searched_for,
-                                     communicator))
+      if (Utilities::MPI::logical_or(
+            prescribed != decoupled_pressures_searched_for
+              || joint_velocity_dofs != joints_searched_for,
+            communicator))
         {
           UndeterminedPressures undetermined;
           {
@@ -259,7 +260,8 @@ namespace particulate {
             undetermined = find_undetermined_pressure_dofs(dof_handler,
                                                            mapping,
                                                            zero_constraints,
-                                                           prescribed);
+                                                           prescribed,
+                                                           joint_velocity_dofs);
           }
           decoupled_pressure_dofs = std::move(undetermined.decoupled);
           // fluid the bodies wall off from the flow (none without them)
@@ -281,6 +283,7 @@ namespace particulate {
                          std::back_inserter(merged));
           decoupled_pressure_dofs          = std::move(merged);
           decoupled_pressures_searched_for = std::move(prescribed);
+          joints_searched_for              = joint_velocity_dofs;
           enclosed_pressure_mode.clear();
           if (constant_pressure_is_null)
             enclosed_pressure_mode
@@ -295,7 +298,8 @@ namespace particulate {
     template <int dim>
     bool
     FlowDiscretisation<dim>::set_fictitious_boundary_values(
-      std::vector<std::pair<types::global_dof_index, double>> values)
+      std::vector<std::pair<types::global_dof_index, double>> values,
+      std::vector<types::global_dof_index>                    joint_dofs)
     {
       // L_p = B D^{-1} B^T depends on which velocity DoFs are constrained:
       // rebuild it when a body has moved over a node (the values alone
@@ -307,9 +311,13 @@ namespace particulate {
                                          [](const auto &a, const auto &b) {
                                            return a.first == b.first;
                                          });
+      const bool same_joints     = joint_dofs == joint_velocity_dofs;
       fictitious_boundary_values = std::move(values);
+      joint_velocity_dofs        = std::move(joint_dofs);
       // collective: every rank must rebuild together
-      return Utilities::MPI::max(same_nodes ? 0 : 1, communicator) > 0;
+      return Utilities::MPI::max(same_nodes && same_joints ? 0 : 1,
+                                 communicator)
+             > 0;
     }
 
 

@@ -3,6 +3,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <cmath>
 #include <fstream>
 
 namespace particulate {
@@ -54,6 +55,55 @@ namespace particulate {
           return update_gradients;
         }
       };
+
+      /** The shear rate g = sqrt(2 D:D) and the viscosity mu(g) of a
+       *  generalized-Newtonian fluid. */
+      template <int dim>
+      class ShearRateAndViscosity : public DataPostprocessor<dim>
+      {
+      public:
+        explicit ShearRateAndViscosity(const ViscosityModel &model)
+          : model(model)
+        {}
+
+        void
+        evaluate_vector_field(
+          const DataPostprocessorInputs::Vector<dim> &inputs,
+          std::vector<Vector<double>>                &computed) const override
+        {
+          for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+            {
+              Tensor<2, dim> grad;
+              for (unsigned int d = 0; d < dim; ++d)
+                grad[d] = inputs.solution_gradients[q][d];
+              const SymmetricTensor<2, dim> D          = symmetrize(grad);
+              const double                  shear_rate = std::sqrt(2. * D * D);
+              computed[q](0)                           = shear_rate;
+              computed[q](1) = model.viscosity(shear_rate);
+            }
+        }
+        std::vector<std::string>
+        get_names() const override
+        {
+          return {"shear_rate", "viscosity"};
+        }
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        get_data_component_interpretation() const override
+        {
+          return std::vector<
+            DataComponentInterpretation::DataComponentInterpretation>(
+            2,
+            DataComponentInterpretation::component_is_scalar);
+        }
+        UpdateFlags
+        get_needed_update_flags() const override
+        {
+          return update_gradients;
+        }
+
+      private:
+        const ViscosityModel &model;
+      };
     } // namespace
 
 
@@ -91,6 +141,9 @@ namespace particulate {
       // the vorticity postprocessor sees only the velocity components
       Vorticity<dim> vorticity;
       data_out.add_data_vector(flow.get_solution(), vorticity);
+      const ShearRateAndViscosity<dim> rheology(flow.get_viscosity_model());
+      if (flow.get_viscosity_model().depends_on_shear_rate())
+        data_out.add_data_vector(flow.get_solution(), rheology);
 
       Vector<float> rank(
         flow.get_dof_handler().get_triangulation().n_active_cells());

@@ -163,7 +163,9 @@ namespace particulate {
         "constant mu. Carreau: mu_inf + (mu_0 - mu_inf) (1 + (lambda "
         "g)^2)^((n-1)/2), shear-thinning for n < 1 and shear-thickening for "
         "n > 1. Cross: mu_inf + (mu_0 - mu_inf) / (1 + (lambda g)^(1-n)), "
-        "shear-thinning (n < 1). power law: K max(g, g_min)^(n-1). table: "
+        "n < 1, from mu_0 at rest to mu_inf at high shear rates: "
+        "shear-thinning for mu_inf < mu_0, shear-thickening with a bounded "
+        "rise for mu_inf > mu_0 (n = -1: smooth in g^2). power law: K max(g, g_min)^(n-1). table: "
         "interpolated from 'Viscosity table'. Newton's method linearises the "
         "viscosity's dependence on the shear rate as well.");
       prm.declare_entry("Infinite-shear viscosity",
@@ -177,9 +179,9 @@ namespace particulate {
                         "rate where the viscosity leaves mu_0.");
       prm.declare_entry("Power-law index",
                         core::number_text(defaults.power_law_index),
-                        Patterns::Double(0.),
+                        Patterns::Double(),
                         "Carreau, Cross and power law: n [-]; positive for "
-                        "Carreau and power law, in [0, 1) for Cross.");
+                        "Carreau and power law, below 1 for Cross.");
       prm.declare_entry("Consistency",
                         core::number_text(defaults.consistency),
                         Patterns::Double(0.),
@@ -220,11 +222,12 @@ namespace particulate {
       if (viscosity_model == ViscosityModelType::cross
           && !(power_law_index < 1.))
         throw std::runtime_error(
-          "subsection 'Fluid': the Cross law is shear-thinning and needs "
-          "'Power-law index' below 1 (it is "
+          "subsection 'Fluid': the Cross law needs 'Power-law index' below "
+          "1 (it is "
           + core::number_text(power_law_index)
-          + "); for a shear-thickening fluid use 'Carreau' with n > 1, "
-            "'power law' or 'table'.");
+          + "): its viscosity moves from mu_0 to mu_inf as (lambda "
+            "g)^(1-n) grows. For a shear-thickening fluid give it mu_inf > "
+            "mu_0, or use 'Carreau' with n > 1, 'power law' or 'table'.");
       if (viscosity_model == ViscosityModelType::table
           && viscosity_table.empty())
         throw std::runtime_error(

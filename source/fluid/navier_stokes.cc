@@ -54,9 +54,11 @@ namespace particulate {
     template <int dim>
     void
     NavierStokes<dim>::set_fictitious_boundary_values(
-      std::vector<std::pair<types::global_dof_index, double>> values)
+      std::vector<std::pair<types::global_dof_index, double>> values,
+      std::vector<types::global_dof_index>                    joint_dofs)
     {
-      if (discretisation.set_fictitious_boundary_values(std::move(values)))
+      if (discretisation.set_fictitious_boundary_values(std::move(values),
+                                                        std::move(joint_dofs)))
         linear_solver->pressure_operator_changed();
     }
 

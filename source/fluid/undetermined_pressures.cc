@@ -71,7 +71,8 @@ namespace particulate {
       const DoFHandler<dim>                      &dof_handler,
       const Mapping<dim>                         &mapping,
       const AffineConstraints<double>            &zero_constraints,
-      const std::vector<types::global_dof_index> &prescribed_dofs)
+      const std::vector<types::global_dof_index> &prescribed_dofs,
+      const std::vector<types::global_dof_index> &joint_dofs)
     {
       std::set<types::global_dof_index> pinned;
       UndeterminedPressures             found;
@@ -104,7 +105,7 @@ namespace particulate {
           if (!cell->is_locally_owned())
             continue;
           cell->get_dof_indices(dofs);
-          bool touches_body = false, all_constrained = true;
+          bool touches_body = false, all_constrained = true, at_joint = false;
           std::vector<unsigned int> free; // positions in velocity_local
           for (unsigned int j = 0; j < velocity_local.size(); ++j)
             {
@@ -112,13 +113,16 @@ namespace particulate {
               touches_body |= std::binary_search(prescribed_dofs.begin(),
                                                  prescribed_dofs.end(),
                                                  dof);
+              at_joint |= std::binary_search(joint_dofs.begin(),
+                                             joint_dofs.end(),
+                                             dof);
               all_constrained &= zero_constraints.is_constrained(dof);
               if (!is_fixed_by_constraint(zero_constraints, dof))
                 free.push_back(j);
             }
           if (!touches_body)
             continue;
-          if (all_constrained || free.empty())
+          if (all_constrained || free.empty() || at_joint)
             {
               for (const unsigned int k : pressure_local)
                 pinned.insert(dofs[k]);
@@ -250,12 +254,14 @@ namespace particulate {
       const DoFHandler<2> &,
       const Mapping<2> &,
       const AffineConstraints<double> &,
+      const std::vector<types::global_dof_index> &,
       const std::vector<types::global_dof_index> &);
     template UndeterminedPressures
     find_undetermined_pressure_dofs<3>(
       const DoFHandler<3> &,
       const Mapping<3> &,
       const AffineConstraints<double> &,
+      const std::vector<types::global_dof_index> &,
       const std::vector<types::global_dof_index> &);
   } // namespace fluid
 } // namespace particulate

@@ -74,7 +74,10 @@ namespace particulate {
      * removing an equation. Patches are taken one after another, each
      * without the DoFs pinned before. Modes across partition boundaries are
      * not searched for. The cells without a free velocity are decoupled
-     * whole and give no patch: their divergence block is empty.
+     * whole and give no patch: their divergence block is empty; so are the
+     * cells touching one of `joint_dofs` (sorted), where the velocities of
+     * two parts of an articulated body meet and no divergence-free flow
+     * takes both.
      */
     template <int dim>
     UndeterminedPressures
@@ -82,7 +85,8 @@ namespace particulate {
       const dealii::DoFHandler<dim>                      &dof_handler,
       const dealii::Mapping<dim>                         &mapping,
       const dealii::AffineConstraints<double>            &zero_constraints,
-      const std::vector<dealii::types::global_dof_index> &prescribed_dofs);
+      const std::vector<dealii::types::global_dof_index> &prescribed_dofs,
+      const std::vector<dealii::types::global_dof_index> &joint_dofs = {});
   } // namespace fluid
 } // namespace particulate
 

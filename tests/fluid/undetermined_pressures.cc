@@ -6,7 +6,10 @@
 //   boundary, so (1, div v) = the flux of v through the boundary = 0 and the
 //   constant mode is unseen, while (x - x_c, div v) = -(1, v_x) != 0 sees the
 //   two gradient modes: exactly the constant mode is pinned;
-// - every velocity fixed: all three modes are pinned.
+// - every velocity fixed: all three modes are pinned;
+// - one vertex node fixed: nothing is pinned, unless its DoFs are where two
+//   parts of an articulated body meet (`joint_dofs`): then the cell loses
+//   all three.
 // The same in 3D (four modes, one of them the constant) with the centre node
 // of a Q2 hexahedron.
 
@@ -45,7 +48,7 @@ namespace {
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     dof_handler.begin_active()->get_dof_indices(dofs);
     AffineConstraints<double>            constraints;
-    std::vector<types::global_dof_index> prescribed;
+    std::vector<types::global_dof_index> prescribed, joints;
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       {
         const auto [component, index] = fe.system_to_component_index(i);
@@ -53,10 +56,14 @@ namespace {
           continue;
         // the interior node is the last support point of FE_Q(2)
         const bool bubble = index == fe.base_element(0).n_dofs_per_cell() - 1;
-        if (which == "all" || (which == "all but the bubble" && !bubble))
+        const bool vertex = index == 0;
+        if (which == "all" || (which == "all but the bubble" && !bubble)
+            || (which.rfind("a vertex", 0) == 0 && vertex))
           {
             constraints.add_line(dofs[i]);
             prescribed.push_back(dofs[i]);
+            if (which == "a vertex at a joint")
+              joints.push_back(dofs[i]);
           }
       }
     constraints.close();
@@ -65,12 +72,14 @@ namespace {
       // a prescribed DoF that is not constrained (every velocity is free)
       prescribed.push_back(dofs[0]);
     std::sort(prescribed.begin(), prescribed.end());
+    std::sort(joints.begin(), joints.end());
 
     std::vector<unsigned int> modes;
     for (const auto dof : fluid::find_undetermined_pressure_dofs(dof_handler,
                                                                  mapping,
                                                                  constraints,
-                                                                 prescribed)
+                                                                 prescribed,
+                                                                 joints)
                             .decoupled)
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         if (dofs[i] == dof)
@@ -93,6 +102,10 @@ namespace {
                   d + "only the bubble free: the constant mode pinned");
     checker.check(pinned_modes<dim>("all").size() == dim + 1,
                   d + "all velocities fixed: every mode pinned");
+    checker.check(pinned_modes<dim>("a vertex").empty(),
+                  d + "a vertex node fixed: no mode pinned");
+    checker.check(pinned_modes<dim>("a vertex at a joint").size() == dim + 1,
+                  d + "a vertex node at a joint: every mode pinned");
   }
 } // namespace
 

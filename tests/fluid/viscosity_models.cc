@@ -86,9 +86,11 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                         checker;
 
-  const CarreauViscosity  thinning_carreau(1., 0.01, 2., 0.4);
-  const CarreauViscosity  thickening_carreau(0.1, 0., 1., 2.);
-  const CrossViscosity    cross(1., 0.01, 2., 0.3);
+  const CarreauViscosity thinning_carreau(1., 0.01, 2., 0.4);
+  const CarreauViscosity thickening_carreau(0.1, 0., 1., 2.);
+  const CrossViscosity   cross(1., 0.01, 2., 0.3);
+  // mu_inf > mu_0: the bounded shear-thickening of the macro-scallop's fluid
+  const CrossViscosity    thickening_cross(0.9, 22., 0.2, -1.);
   const PowerLawViscosity thinning_power(0.1, 0.5, 1e-6),
     thickening_power(0.1, 1.5, 1e-6);
   const std::vector<double> rates = {1e-3, 1e-2, 0.1, 1., 10., 100., 1e3};
@@ -98,6 +100,7 @@ main(int argc, char **argv)
     = {{"Carreau n = 0.4", &thinning_carreau},
        {"Carreau n = 2", &thickening_carreau},
        {"Cross n = 0.3", &cross},
+       {"Cross n = -1, thickening", &thickening_cross},
        {"power law n = 0.5", &thinning_power},
        {"power law n = 1.5", &thickening_power},
        {"table of Carreau n = 0.4", &carreau_table}};

@@ -84,7 +84,8 @@ namespace particulate {
        *  (collective). */
       bool
       set_fictitious_boundary_values(
-        std::vector<std::pair<dealii::types::global_dof_index, double>> values);
+        std::vector<std::pair<dealii::types::global_dof_index, double>> values,
+        std::vector<dealii::types::global_dof_index> joint_dofs);
 
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void
@@ -379,6 +380,9 @@ namespace particulate {
       /// velocity values imposed inside fictitious-boundary bodies
       std::vector<std::pair<dealii::types::global_dof_index, double>>
         fictitious_boundary_values;
+      /// where the parts of an articulated body meet (sorted; see
+      /// NavierStokes::set_fictitious_boundary_values())
+      std::vector<dealii::types::global_dof_index> joint_velocity_dofs;
       /// their DoFs, sorted
       std::vector<dealii::types::global_dof_index> prescribed_velocity_dofs;
       /// Pressure DoFs (locally owned, sorted) that no equation determines:
@@ -404,6 +408,8 @@ namespace particulate {
       /// matches none after new DoFs or a moved mesh)
       std::vector<dealii::types::global_dof_index>
         decoupled_pressures_searched_for;
+      /// the joint DoFs it was made for
+      std::vector<dealii::types::global_dof_index> joints_searched_for;
 
       dealii::TrilinosWrappers::BlockSparseMatrix system_matrix;
       /// 'Velocity operator = matrix-free': the velocity block as an

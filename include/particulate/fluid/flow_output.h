@@ -13,8 +13,9 @@ namespace particulate {
      * ParaView output of the flow: one `.vtu` per rank and a `.pvtu` per
      * output step, collected in `flow.pvd` with the physical time. Written
      * fields: velocity (vector), pressure, vorticity (scalar in 2D, vector in
-     * 3D) and the owning MPI rank. The `.pvd` is rewritten after every step,
-     * so an interrupted run leaves a valid series.
+     * 3D), for a viscosity that depends on the shear rate the shear rate
+     * sqrt(2 D:D) and the viscosity, and the owning MPI rank. The `.pvd` is
+     * rewritten after every step, so an interrupted run leaves a valid series.
      */
     template <int dim>
     class FlowOutput

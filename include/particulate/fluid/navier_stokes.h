@@ -116,10 +116,17 @@ namespace particulate {
        * conditions and hanging nodes leave free, and stay until replaced.
        * Every rank must pass the values of all its locally relevant DoFs
        * inside bodies, so that the constraints agree across ranks.
+       *
+       * @p joint_dofs (sorted) are those of the values where the rigid
+       * motions of two parts of one articulated body meet: no
+       * divergence-free velocity takes both in one cell, so the cells with
+       * one of them lose their continuity equations (their pressures are
+       * decoupled, like those of cells inside a body).
        */
       void
       set_fictitious_boundary_values(
-        std::vector<std::pair<dealii::types::global_dof_index, double>> values);
+        std::vector<std::pair<dealii::types::global_dof_index, double>> values,
+        std::vector<dealii::types::global_dof_index> joint_dofs = {});
 
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void

@@ -129,9 +129,11 @@ namespace particulate {
     };
 
     /**
-     * Cross law mu = mu_inf + (mu_0 - mu_inf) / (1 + (lambda g)^(1-n)), a
-     * shear-thinning law (0 <= n < 1) whose viscosity falls like g^(n-1)
-     * between its two plateaus.
+     * Cross law mu = mu_inf + (mu_0 - mu_inf) / (1 + (lambda g)^(1-n)),
+     * n < 1: between its two plateaus the viscosity falls like g^(n-1)
+     * where mu_inf < mu_0 (shear-thinning), and rises to mu_inf where
+     * mu_inf > mu_0 (a shear-thickening fluid with a bounded viscosity;
+     * n = -1 makes it a smooth function of g^2).
      */
     class CrossViscosity : public PlateauViscosity
     {
