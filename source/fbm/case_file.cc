@@ -128,7 +128,8 @@ namespace particulate {
       const ParticleParameters &particles = parameters.particles;
       if (parameters.flow.time.scheme == core::TimeParameters::Scheme::steady
           && (particles.any(ParticleMotion::free)
-              || particles.any(ParticleMotion::prescribed)))
+              || particles.any(ParticleMotion::prescribed)
+              || particles.any(ParticleMotion::hinged)))
         throw std::runtime_error(
           filename
           + ": moving particles need a time-dependent scheme: set 'Scheme' "

@@ -361,6 +361,37 @@ namespace particulate {
 
 
     template <int dim>
+    std::vector<typename FictitiousBoundary<dim>::DofIndex>
+    FictitiousBoundary<dim>::joint_dofs(
+      const std::vector<int> &joint_of_body) const
+    {
+      std::vector<DofIndex> dofs;
+      const auto            joint = [&](const unsigned int node) {
+        return node_body[node] < 0 ? -1 : joint_of_body[node_body[node]];
+      };
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          const unsigned int *nodes = cell_nodes(c);
+          bool                meet  = false;
+          for (unsigned int a = 0; a < nodes_per_cell_ && !meet; ++a)
+            for (unsigned int b = a + 1; b < nodes_per_cell_ && !meet; ++b)
+              meet = joint(nodes[a]) >= 0 && joint(nodes[a]) == joint(nodes[b])
+                     && node_body[nodes[a]] != node_body[nodes[b]];
+          if (!meet)
+            continue;
+          for (unsigned int a = 0; a < nodes_per_cell_; ++a)
+            if (joint(nodes[a]) >= 0)
+              for (unsigned int d = 0; d < dim; ++d)
+                dofs.push_back(node_dofs[nodes[a]][d]);
+        }
+      std::sort(dofs.begin(), dofs.end());
+      dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+      return dofs;
+    }
+
+
+
+    template <int dim>
     std::vector<unsigned long>
     FictitiousBoundary<dim>::n_nodes_inside(const unsigned int n_bodies) const
     {

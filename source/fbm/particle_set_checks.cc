@@ -1,3 +1,4 @@
+#include <particulate/fbm/articulated_assembly.h>
 #include <particulate/fbm/particle_set_checks.h>
 #include <particulate/geometry/pose.h>
 #include <particulate/rigid/narrow_phase.h>
@@ -121,6 +122,10 @@ namespace particulate {
                           0.,
                           dim,
                           [&](unsigned int i, unsigned int j) {
+                            // the parts of an articulated body may overlap
+                            if (assembly_head(particles, i)
+                                == assembly_head(particles, j))
+                              return;
                             const double depth
                               = penetration(particles[i], particles[j]);
                             const double size = std::min(radii[i], radii[j]);
@@ -265,7 +270,10 @@ namespace particulate {
       };
       const auto check = [&](const rigid::BodyId a, const rigid::BodyId b) {
         const rigid::RigidBody &A = world.body(a), &B = world.body(b);
-        if (A.is_fixed() && B.is_fixed())
+        // nor the parts of an articulated body, which meet at their hinges
+        if ((A.is_fixed() && B.is_fixed())
+            || (world.collision_group(a) != 0
+                && world.collision_group(a) == world.collision_group(b)))
           return;
         const bool   a_first = A.shape().kind() <= B.shape().kind();
         const double gap     = a_first ? smallest_gap(A, B, clearance) :

@@ -5,6 +5,7 @@
 #include <particulate/fbm/shape_template.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "entry_values.h"
@@ -100,7 +101,7 @@ namespace particulate {
         prm.declare_entry(
           "Motion",
           "free",
-          Patterns::Selection(prescribed ? "free|fixed|prescribed" :
+          Patterns::Selection(prescribed ? "free|fixed|prescribed|hinged" :
                                            "free|fixed"),
           prescribed ?
             "'free': moves under the fluid force, buoyancy-corrected "
@@ -108,7 +109,13 @@ namespace particulate {
             "an obstacle of the flow and of the contacts. 'prescribed': "
             "moves by 'Prescribed displacement' and 'Prescribed rotation' "
             "(e.g. an oscillating cylinder, thesis §6.3), whatever the fluid "
-            "does." :
+            "does. 'hinged': a part of an articulated body (a swimmer's "
+            "shell, thesis §6.5), carried by the particle 'Hinged to' and "
+            "turned relative to it by 'Hinge angle' about 'Hinge axis' "
+            "through 'Hinge point'; its loads move that particle, which "
+            "carries its mass. The parts of one body do not collide with "
+            "each other; with other particles and the walls, a part is an "
+            "obstacle that gives way to nothing." :
             "'free': the particles move under the fluid force, gravity and "
             "contacts. 'fixed': they stay at rest (obstacles).");
       }
@@ -119,6 +126,7 @@ namespace particulate {
         const std::string m = prm.get("Motion");
         return m == "fixed"      ? ParticleMotion::fixed :
                m == "prescribed" ? ParticleMotion::prescribed :
+               m == "hinged"     ? ParticleMotion::hinged :
                                    ParticleMotion::free;
       }
 
@@ -175,6 +183,134 @@ namespace particulate {
       }
 
       void
+      declare_hinge(ParameterHandler &prm)
+      {
+        prm.declare_entry("Hinged to",
+                          "",
+                          Patterns::Anything(),
+                          "'Motion = hinged': the number n of the 'Particle "
+                          "n' that carries this part (free, fixed or "
+                          "prescribed; not itself hinged).");
+        prm.declare_entry("Hinge point",
+                          "",
+                          Patterns::Anything(),
+                          "'Motion = hinged': a point [m] on the hinge's "
+                          "axis, one coordinate per space dimension, with "
+                          "the parent where it starts.");
+        prm.declare_entry("Hinge axis",
+                          "0, 0, 1",
+                          Patterns::Anything(),
+                          "'Motion = hinged': the hinge's axis (3 "
+                          "components, world frame with the parent where it "
+                          "starts; 2D runs turn about z only).");
+        core::FunctionExpression::declare(
+          prm,
+          "Hinge angle",
+          "",
+          "'Motion = hinged': the angle beta(t) [rad] by which the part is "
+          "turned about the hinge's axis (right-handed) from the pose that "
+          "'Position' and the orientation give it, one expression in t, "
+          "e.g. 'if(t < 1, t, 2 - t)'. The turn's rate is its time "
+          "derivative, taken numerically.");
+      }
+
+      /** A point or axis entry holds no value. */
+      bool
+      is_empty(const ParameterHandler &prm, const std::string &entry)
+      {
+        return Utilities::trim(prm.get(entry)).empty();
+      }
+
+      /** The hinge of a part ('Motion = hinged'); for another motion, the
+       *  hinge's entries must be left out. Its parent is checked with the
+       *  whole set (check_hinges()). */
+      void
+      read_hinge(const ParameterHandler &prm,
+                 ParticleDescription    &p,
+                 const unsigned int      dim,
+                 const Place            &place)
+      {
+        p.hinge.angle.parse(prm, "Hinge angle");
+        if (p.motion != ParticleMotion::hinged)
+          {
+            if (!is_empty(prm, "Hinged to") || !is_empty(prm, "Hinge point")
+                || !Utilities::trim(p.hinge.angle.expression).empty())
+              internal::fail_at(place("Motion"),
+                                "a hinge ('Hinged to', 'Hinge point' or "
+                                "'Hinge angle') is given, but the motion is "
+                                "not 'hinged'; set 'Motion = hinged' or "
+                                "remove them.");
+            return;
+          }
+        for (const std::string entry : {"Hinged to", "Hinge point"})
+          if (is_empty(prm, entry))
+            internal::fail_at(place(entry),
+                              "'Motion = hinged' needs '" + entry + "'.");
+        const double parent
+          = internal::read_numbers(prm.get("Hinged to"), 1, place("Hinged to"))
+              .front();
+        if (!(parent >= 0.) || parent != std::floor(parent))
+          internal::fail_at(place("Hinged to"),
+                            "write the number n of a 'Particle n'.");
+        p.hinge.parent = static_cast<unsigned int>(parent);
+        p.hinge.point  = internal::read_vector(prm.get("Hinge point"),
+                                              dim,
+                                              place("Hinge point"));
+        const Eigen::Vector3d axis
+          = internal::read_vector(prm.get("Hinge axis"),
+                                  3,
+                                  place("Hinge axis"));
+        const double largest = axis.cwiseAbs().maxCoeff();
+        if (!(largest > 0.))
+          internal::fail_at(place("Hinge axis"), "the axis must not be zero.");
+        p.hinge.axis = (axis / largest).normalized();
+        if (dim == 2 && p.hinge.axis.head<2>().norm() > 1e-12)
+          internal::fail_at(place("Hinge axis"),
+                            "a 2D run turns bodies about z only.");
+        try
+          {
+            if (dim == 2)
+              p.hinge.angle.create<2>(1, "Hinge angle");
+            else
+              p.hinge.angle.create<3>(1, "Hinge angle");
+          }
+        catch (const std::exception &e)
+          {
+            internal::fail_at(place("Hinge angle"), e.what());
+          }
+      }
+
+      /** Each part is hinged to another 'Particle n' that is not hinged
+       *  itself. @p labels are the particles' subsection labels. */
+      void
+      check_hinges(const std::vector<ParticleDescription> &particles,
+                   const std::vector<std::string>         &labels,
+                   const core::InputOutline               &outline)
+      {
+        for (unsigned int i = 0; i < particles.size(); ++i)
+          {
+            const ParticleDescription &p = particles[i];
+            if (p.motion != ParticleMotion::hinged)
+              continue;
+            const std::string where
+              = outline.where({particles_section, "Particle " + labels[i]},
+                              "Hinged to");
+            const unsigned int parent = p.hinge.parent;
+            if (parent >= particles.size())
+              internal::fail_at(where,
+                                "there is no 'Particle "
+                                  + std::to_string(parent) + "'.");
+            if (parent == i)
+              internal::fail_at(where, "a part cannot be hinged to itself.");
+            if (particles[parent].motion == ParticleMotion::hinged)
+              internal::fail_at(where,
+                                "'Particle " + std::to_string(parent)
+                                  + "' is itself hinged; hinge every part "
+                                    "to the body's head.");
+          }
+      }
+
+      void
       declare_particle(ParameterHandler &prm)
       {
         declare_shape_entry(prm);
@@ -214,6 +350,7 @@ namespace particulate {
           "world axes, its length the angle), in 2D the angle about z (one "
           "expression). The angular velocity is its time derivative, taken "
           "numerically.");
+        declare_hinge(prm);
       }
 
       ParticleDescription
@@ -247,6 +384,7 @@ namespace particulate {
                             "a prescribed displacement or rotation is given, "
                             "but the motion is not 'prescribed'; set 'Motion "
                             "= prescribed' or remove them.");
+        read_hinge(prm, p, dim, place);
         return p;
       }
 
@@ -540,11 +678,14 @@ namespace particulate {
         });
 
       std::vector<ParticleDescription> particles;
-      for (const std::string &label : numbered(layout.particles, outline))
+      const std::vector<std::string>   labels
+        = numbered(layout.particles, outline);
+      for (const std::string &label : labels)
         particles.push_back(
           in_subsection("Particle " + label, [&](const Place &place) {
             return read_particle(prm, shapes, dim, place);
           }));
+      check_hinges(particles, labels, outline);
 
       const std::string file = Utilities::trim(prm.get("Particle file"));
       if (!file.empty())

@@ -58,6 +58,37 @@ namespace particulate {
                              true);
           }
       }
+
+      /** Each articulated body's head carries its parts' mass and inertia;
+       *  its parts and it share a collision group, as they overlap at the
+       *  hinges. */
+      void
+      join_assemblies(rigid::World                           &world,
+                      const std::vector<rigid::BodyId>       &ids,
+                      const std::vector<ParticleDescription> &particles,
+                      const std::vector<BodyStart>           &starts,
+                      const ParticleWorldFrame               &frame)
+      {
+        const auto   parts = hinged_parts(particles);
+        unsigned int group = 0;
+        for (unsigned int i = 0; i < particles.size(); ++i)
+          {
+            if (parts[i].empty())
+              continue;
+            world.set_collision_group(ids[i], ++group);
+            for (const unsigned int j : parts[i])
+              world.set_collision_group(ids[j], group);
+            if (particles[i].motion != ParticleMotion::free)
+              continue;
+            const AssemblyInertia a = assembly_inertia(particles,
+                                                       starts,
+                                                       i,
+                                                       parts[i],
+                                                       frame.added_density);
+            world.body(ids[i]).set_mass_properties(a.mass,
+                                                   a.inertia.diagonal());
+          }
+      }
     } // namespace
 
 
@@ -115,6 +146,7 @@ namespace particulate {
               b.angular_velocity = start.angular_velocity;
             }
         }
+      join_assemblies(world, result.ids, particles.bodies, starts, frame);
       // walls are immovable: their density does not enter
       rigid::Material wall_material = material;
       wall_material.name            = "wall";

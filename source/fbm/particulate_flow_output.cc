@@ -230,7 +230,7 @@ namespace particulate {
       std::ofstream     out(name);
       out << "id,shape,motion,density,volume,mass,x,y,z\n"
           << std::setprecision(12);
-      const char *const motions[] = {"free", "fixed", "prescribed"};
+      const char *const motions[] = {"free", "fixed", "prescribed", "hinged"};
       for (unsigned int i = 0; i < particles.size(); ++i)
         {
           const ParticleDescription &p      = particles[i];

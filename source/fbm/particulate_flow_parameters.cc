@@ -99,6 +99,13 @@ namespace particulate {
           + ": a 'rigid bodies' run needs at least one particle: add a "
             "subsection 'Particle 0' (or a 'Particle file', 'Lattice' or "
             "'Random fill') to subsection 'Particles'.");
+      if (flow.simulation.type == Type::rigid_bodies
+          && particles.any(ParticleMotion::hinged))
+        throw std::runtime_error(
+          filename
+          + ": 'Motion = hinged' moves a body by the loads a fluid puts on "
+            "its parts, and a 'rigid bodies' run has no fluid: set 'Type' in "
+            "subsection 'Simulation' to 'particulate flow'.");
       if (flow.simulation.type != Type::fluid
           && sets_any_entry(outline, "Forces"))
         throw std::runtime_error(

@@ -7,6 +7,7 @@
 #include <particulate/fbm/case_file.h>
 #include <particulate/fbm/energy_balance.h>
 #include <particulate/fbm/fictitious_boundary.h>
+#include <particulate/fbm/hinged_motion.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
 #include <particulate/fbm/particle_set_checks.h>
 #include <particulate/fbm/particle_shape.h>
@@ -75,8 +76,6 @@ namespace particulate {
           const std::string               &parameter_file,
           MPI_Comm                         comm)
         : fluid::RunFrame<dim>(parameters.flow, parameter_file, comm)
-        , rigid_update(parameters.particles,
-                       parameters.flow.fluid.properties.density)
         , output(parameters.flow.output, comm)
         , checkpoint(parameters.flow.output.directory, comm)
       {}
@@ -87,6 +86,9 @@ namespace particulate {
       unsigned int n_images = 1;
       /// per particle: its motion where it is prescribed, else null
       std::vector<std::unique_ptr<PrescribedMotion<dim>>> prescribed;
+      /// per particle: its motion on its parent where it is hinged, else
+      /// null
+      std::vector<std::unique_ptr<HingedMotion<dim>>> hinged;
       /// per particle: where it starts (a prescribed one at d(0), phi(0))
       std::vector<BodyStart>                              starts;
       std::unique_ptr<BodyAdaptedMesh<dim>>               adapted_mesh;
@@ -94,12 +96,15 @@ namespace particulate {
       std::unique_ptr<fluid::NavierStokes<dim>>           flow;
       std::unique_ptr<rigid::World>                       world;
       std::vector<rigid::BodyId>                          ids;
-      RigidBodyUpdate                                     rigid_update;
+      std::unique_ptr<RigidBodyUpdate>                    rigid_update;
       std::unique_ptr<BodyStateGuard>                     guard;
       std::unique_ptr<EnergyBalance>                      energy;
       std::unique_ptr<FictitiousBoundary<dim>>            interface;
       std::vector<typename FictitiousBoundary<dim>::Body> interface_bodies;
-      std::vector<BodyCouplingState>                      states;
+      /// per particle: its articulated body's head where it has parts or is
+      /// one, else -1 (FictitiousBoundary::joint_dofs())
+      std::vector<int>               joint_of_body;
+      std::vector<BodyCouplingState> states;
       /// 'Force integral = stress and inertia': the flow at the start of
       /// the step
       std::optional<typename fluid::NavierStokes<dim>::BlockVector> step_start;
@@ -110,7 +115,7 @@ namespace particulate {
       /// wall seconds of the last checkpoint
       double                 last_checkpoint = 0.;
       ParticulateFlowSummary summary;
-      /// some particle's motion is prescribed
+      /// some particle moves by a given motion (prescribed or hinged)
       bool any_prescribed = false;
       /// the mesh follows moving bodies at the start of every step
       bool mesh_follows = false;
@@ -209,24 +214,7 @@ namespace particulate {
       Run &r = *run_;
 
       create_mesh();
-      for (const ParticleDescription &p : particle_p.bodies)
-        {
-          r.prescribed.push_back(
-            p.motion == ParticleMotion::prescribed ?
-              std::make_unique<PrescribedMotion<dim>>(p, time_p.end_time) :
-              nullptr);
-          const PrescribedState start = r.prescribed.back() ?
-                                          r.prescribed.back()->state(0.) :
-                                          PrescribedState{p.position,
-                                                          p.velocity,
-                                                          p.orientation,
-                                                          p.angular_velocity};
-          r.starts.push_back({start.position,
-                              start.orientation,
-                              start.velocity,
-                              start.angular_velocity});
-        }
-      r.any_prescribed = particle_p.any(ParticleMotion::prescribed);
+      set_up_given_motions();
       adapt_mesh_to_bodies();
 
       r.flow = std::make_unique<fluid::NavierStokes<dim>>(parameters.flow.fluid,
@@ -260,6 +248,10 @@ namespace particulate {
       r.mesh_follows
         = r.adapted_mesh
           && (particle_p.any(ParticleMotion::free) || r.any_prescribed);
+      r.rigid_update = std::make_unique<RigidBodyUpdate>(
+        particle_p,
+        parameters.flow.fluid.properties.density,
+        r.starts);
       r.predict_interface = particle_p.any(ParticleMotion::free)
                             && (particle_p.extrapolate_constraint_velocity
                                 || particle_p.midpoint_interface_position);
@@ -274,6 +266,87 @@ namespace particulate {
           TimerOutput::Scope scope(r.timer, "output");
           r.output.write_fields(*r.flow, *r.world, 0, 0.);
         }
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::set_up_given_motions()
+    {
+      Run        &r         = *run_;
+      const auto &particles = parameters.particles.bodies;
+      const auto  start_of  = [](const PrescribedState &s) {
+        return BodyStart{s.position,
+                         s.orientation,
+                         s.velocity,
+                         s.angular_velocity};
+      };
+      for (const ParticleDescription &p : particles)
+        {
+          r.prescribed.push_back(p.motion == ParticleMotion::prescribed ?
+                                   std::make_unique<PrescribedMotion<dim>>(
+                                     p,
+                                     parameters.flow.time.end_time) :
+                                   nullptr);
+          r.starts.push_back(start_of(r.prescribed.back() ?
+                                        r.prescribed.back()->state(0.) :
+                                        PrescribedState{p.position,
+                                                        p.velocity,
+                                                        p.orientation,
+                                                        p.angular_velocity}));
+        }
+      // the parts after every parent has its start
+      r.hinged.resize(particles.size());
+      for (unsigned int i = 0; i < particles.size(); ++i)
+        if (particles[i].motion == ParticleMotion::hinged)
+          {
+            const BodyStart      &parent = r.starts[particles[i].hinge.parent];
+            const PrescribedState parent_state{parent.position,
+                                               parent.velocity,
+                                               parent.orientation,
+                                               parent.angular_velocity};
+            r.hinged[i] = std::make_unique<HingedMotion<dim>>(
+              particles[i],
+              parent_state,
+              parameters.flow.time.end_time);
+            r.starts[i] = start_of(r.hinged[i]->state(0., parent_state));
+          }
+      r.any_prescribed = parameters.particles.any(ParticleMotion::prescribed)
+                         || parameters.particles.any(ParticleMotion::hinged);
+      const auto parts = hinged_parts(particles);
+      for (unsigned int i = 0; i < particles.size(); ++i)
+        {
+          const unsigned int head = assembly_head(particles, i);
+          r.joint_of_body.push_back(
+            parts[head].empty() ? -1 : static_cast<int>(head));
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::pose_hinged_parts(const double time)
+    {
+      Run &r = *run_;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        if (r.hinged[i])
+          {
+            const rigid::RigidBody &parent = r.world->body(
+              r.ids[parameters.particles.bodies[i].hinge.parent]);
+            const PrescribedState s
+              = r.hinged[i]->state(time,
+                                   {parent.position,
+                                    parent.linear_velocity,
+                                    parent.orientation,
+                                    parent.angular_velocity});
+            rigid::RigidBody &b = r.world->body(r.ids[i]);
+            b.position          = s.position;
+            b.linear_velocity   = s.velocity;
+            b.orientation       = s.orientation;
+            b.angular_velocity  = s.angular_velocity;
+          }
     }
 
 
@@ -585,7 +658,7 @@ namespace particulate {
           if (t > 0.)
             for (const auto &f : r.world->contact_forces(r.ids[i]))
               row.contact_force += f.force;
-          row.kinetic_energy = r.rigid_update.kinetic_energy(i, *row.body);
+          row.kinetic_energy = r.rigid_update->kinetic_energy(i, *row.body);
           row.nodes_inside   = nodes_inside[i];
           particles_energy += row.kinetic_energy;
           r.states[i].record_speed(row.body->linear_velocity.norm(), t);
@@ -631,7 +704,8 @@ namespace particulate {
         r.states[i].load_centre = r.world->body(r.ids[i]).position;
       record_imposed();
       r.flow->set_fictitious_boundary_values(
-        r.interface->constraint_values(r.interface_bodies));
+        r.interface->constraint_values(r.interface_bodies),
+        r.interface->joint_dofs(r.joint_of_body));
     }
 
 
@@ -657,9 +731,11 @@ namespace particulate {
         }
       TimerOutput::Scope scope(r.timer, "fbm: constraints");
       auto values = r.interface->constraint_values(r.interface_bodies);
+      auto joints = r.interface->joint_dofs(r.joint_of_body);
       record_imposed();
       restore_bodies(current);
-      r.flow->set_fictitious_boundary_values(std::move(values));
+      r.flow->set_fictitious_boundary_values(std::move(values),
+                                             std::move(joints));
     }
 
 
@@ -705,6 +781,11 @@ namespace particulate {
             }
           r.states[i].load_centre = b.position;
         }
+      // the parts ride on their predicted heads
+      pose_hinged_parts(t + k);
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        if (r.hinged[i])
+          r.states[i].load_centre = r.world->body(r.ids[i]).position;
       return current;
     }
 
@@ -744,6 +825,7 @@ namespace particulate {
             b.orientation           = s.orientation;
             b.angular_velocity      = s.angular_velocity;
           }
+      pose_hinged_parts(t_new);
       if (!r.mesh_follows)
         return;
       deformation::DeformationReport report;
@@ -863,7 +945,7 @@ namespace particulate {
         TimerOutput::Scope scope(r.timer, "rigid bodies");
         r.guard->start_step(*r.world);
         r.rigid_update
-          .advance(*r.world, r.ids, r.states, k, t + k, r.energy.get());
+          ->advance(*r.world, r.ids, r.states, k, t + k, r.energy.get());
         r.guard->check_step(*r.world, t + k, k);
       }
       const std::string warning = r.energy->warning(t + k);
@@ -871,6 +953,8 @@ namespace particulate {
         r.pcout << warning << std::endl;
       t += k;
       ++step;
+      // the parts where their heads now are, for the output at t_n+1
+      pose_hinged_parts(t);
       // bodies that do not move before a step are marked where it ends:
       // the interface of the next step, which the output at t_n+1 shows
       if (!(r.any_prescribed || r.mesh_follows))

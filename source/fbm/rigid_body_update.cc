@@ -7,17 +7,29 @@
 namespace particulate {
   namespace fbm {
     RigidBodyUpdate::RigidBodyUpdate(const ParticleParameters &particles,
-                                     const double              fluid_density)
+                                     const double              fluid_density,
+                                     const std::vector<BodyStart> &starts)
       : fluid_density(fluid_density)
       , gravity(particles.gravity)
       , locked_translation(particles.locked_translation)
       , locked_rotation(particles.locked_rotation)
+      , parts(hinged_parts(particles.bodies))
+      , assembly(particles.n_particles())
     {
       for (const ParticleDescription &p : particles.bodies)
         {
           particle_density.push_back(p.density);
           free.push_back(p.motion == ParticleMotion::free);
         }
+      for (unsigned int i = 0; i < particles.n_particles(); ++i)
+        if (free[i] && !parts[i].empty())
+          {
+            if (starts.size() != particles.n_particles())
+              throw std::logic_error(
+                "RigidBodyUpdate: an articulated body needs the starts");
+            assembly[i]
+              = assembly_inertia(particles.bodies, starts, i, parts[i], 0.);
+          }
     }
 
 
@@ -26,6 +38,8 @@ namespace particulate {
     RigidBodyUpdate::true_mass(const unsigned int      i,
                                const rigid::RigidBody &body) const
     {
+      if (assembly[i].mass > 0.)
+        return assembly[i].mass;
       return particle_density[i] * body.volume();
     }
 
@@ -38,8 +52,11 @@ namespace particulate {
       // from the shape, not the engine's body: a fixed or prescribed
       // particle is an immovable body of infinite inertia in the engine
       const Eigen::Matrix3d R = body.rotation();
-      return R * (particle_density[i] * body.shape().unit_inertia())
-             * R.transpose();
+      const Eigen::Matrix3d I
+        = assembly[i].mass > 0. ?
+            Eigen::Matrix3d(assembly[i].inertia.diagonal().asDiagonal()) :
+            Eigen::Matrix3d(particle_density[i] * body.shape().unit_inertia());
+      return R * I * R.transpose();
     }
 
 
@@ -48,23 +65,30 @@ namespace particulate {
     RigidBodyUpdate::kinetic_energy(const unsigned int      i,
                                     const rigid::RigidBody &body) const
     {
-      return 0.5 * true_mass(i, body) * body.linear_velocity.squaredNorm()
-             + 0.5
-                 * body.angular_velocity.dot(true_inertia_world(i, body)
-                                             * body.angular_velocity);
+      // its own mass and inertia, also for the head of an articulated body:
+      // each part counts its own energy with the velocity it has
+      const Eigen::Matrix3d R = body.rotation();
+      const Eigen::Matrix3d I
+        = R * (particle_density[i] * body.shape().unit_inertia())
+          * R.transpose();
+      return 0.5 * particle_density[i] * body.volume()
+               * body.linear_velocity.squaredNorm()
+             + 0.5 * body.angular_velocity.dot(I * body.angular_velocity);
     }
 
 
 
     void
-    RigidBodyUpdate::apply_loads(rigid::World            &world,
-                                 const unsigned int       i,
-                                 const rigid::BodyId      id,
-                                 const BodyCouplingState &state) const
+    RigidBodyUpdate::apply_loads(
+      rigid::World                         &world,
+      const unsigned int                    i,
+      const std::vector<rigid::BodyId>     &ids,
+      const std::vector<BodyCouplingState> &states) const
     {
-      const rigid::RigidBody &b   = world.body(id);
-      const double            m_a = b.mass() - true_mass(i, b);
-      Eigen::Vector3d         force
+      const rigid::RigidBody  &b     = world.body(ids[i]);
+      const BodyCouplingState &state = states[i];
+      const double             m_a   = b.mass() - true_mass(i, b);
+      Eigen::Vector3d          force
         = state.fluid_load.force
           + (particle_density[i] - fluid_density) * b.volume() * gravity
           + m_a * state.acceleration;
@@ -75,6 +99,18 @@ namespace particulate {
       Eigen::Vector3d        torque = state.fluid_load.torque
                                + I_a * state.angular_acceleration
                                + omega.cross(I_a * omega);
+      for (const unsigned int j : parts[i])
+        {
+          const rigid::RigidBody &part = world.body(ids[j]);
+          const Eigen::Vector3d   weight
+            = (particle_density[j] - fluid_density) * part.volume() * gravity;
+          const HydrodynamicLoad &load = states[j].fluid_load;
+          force += load.force + weight;
+          torque
+            += load.torque
+               + (states[j].load_centre - state.load_centre).cross(load.force)
+               + (part.position - b.position).cross(weight);
+        }
       for (unsigned int d = 0; d < 3; ++d)
         {
           if (locked_translation[d])
@@ -82,7 +118,7 @@ namespace particulate {
           if (locked_rotation[d])
             torque[d] = 0.;
         }
-      world.set_external_force_and_torque(id, force, torque);
+      world.set_external_force_and_torque(ids[i], force, torque);
     }
 
 
@@ -124,7 +160,7 @@ namespace particulate {
           old_position[i]           = b.position;
           old_orientation[i]        = b.orientation;
           if (free[i])
-            apply_loads(world, i, ids[i], states[i]);
+            apply_loads(world, i, ids, states);
         }
       if (balance)
         balance->start_step(world);

@@ -99,6 +99,17 @@ namespace particulate {
       std::vector<std::pair<DofIndex, double>>
       constraint_values(const std::vector<Body> &bodies) const;
 
+      /**
+       * The velocity DoFs (sorted) of the covered nodes of the owned cells
+       * where nodes of two bodies of one joint meet: the parts of an
+       * articulated body, @p joint_of_body giving each body's joint (-1:
+       * none). Their velocities come from two rigid motions, which no
+       * divergence-free flow in the cell takes (fluid::NavierStokes::
+       * set_fictitious_boundary_values()).
+       */
+      std::vector<DofIndex>
+      joint_dofs(const std::vector<int> &joint_of_body) const;
+
       /** Per body, the number of nodes (all ranks) inside it: a measure
        *  of how well the mesh resolves it. Collective. */
       std::vector<unsigned long>

@@ -22,7 +22,26 @@ namespace particulate {
       fixed,
       /// moved by a given displacement d(t) and rotation phi(t), whatever
       /// the fluid does
-      prescribed
+      prescribed,
+      /// a part of an articulated body: carried by another particle (its
+      /// parent) and turned relative to it about a hinge by a given angle
+      /// beta(t); the parent feels the part's loads
+      hinged
+    };
+
+    /** How a hinged part hangs on its parent (ParticleMotion::hinged). */
+    struct HingeDescription
+    {
+      /// the index of the particle it is hinged to
+      unsigned int parent = 0;
+      /// a point on the hinge's axis [m] and the axis (unit), both in the
+      /// world as the case file places the parent at t = 0; in 2D the axis
+      /// is z
+      Eigen::Vector3d point = Eigen::Vector3d::Zero();
+      Eigen::Vector3d axis  = Eigen::Vector3d::UnitZ();
+      /// beta(t) [rad], the turn about the axis (right-handed) from the pose
+      /// the case file gives the part
+      core::FunctionExpression angle;
     };
 
     /**
@@ -53,6 +72,8 @@ namespace particulate {
       /// rotation vector [rad] in the world frame (3D: 3 components; 2D: one,
       /// the angle about z)
       core::FunctionExpression prescribed_rotation;
+      /// ParticleMotion::hinged: its parent, hinge and angle
+      HingeDescription hinge;
       /// where the input describes it, for messages ("case.prm:40:
       /// subsection 'Particles / Particle 3'", "beads.csv:17")
       std::string origin;

@@ -16,7 +16,8 @@ namespace particulate {
      * Refuse initial particles that overlap: each pair whose bounding
      * balls meet is tested with the rigid engine's narrow phase (exact for
      * the analytic shapes); a penetration deeper than 1e-9 of the smaller
-     * body's size stops the run. Touching is allowed.
+     * body's size stops the run. Touching is allowed, and so are overlaps
+     * among the parts of an articulated body.
      * @throw std::runtime_error naming both particles, where each was
      *   described, and the depth
      */

@@ -55,7 +55,8 @@ namespace particulate {
      * @throw std::runtime_error naming the file, line and entry for an
      *   unknown shape name, numbers of the wrong count, particles that are
      *   not numbered 0, 1, 2, ..., a prescribed motion with the wrong
-     *   number of components, a bad line of the particle file, a generator
+     *   number of components, a hinged part without its hinge or hinged
+     *   to a particle that is missing, itself or hinged too, a bad line of the particle file, a generator
      *   that cannot place its particles, or two initial particles that
      *   overlap
      */

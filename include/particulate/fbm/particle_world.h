@@ -1,6 +1,7 @@
 #ifndef particulate_fbm_particle_world_h
 #define particulate_fbm_particle_world_h
 
+#include <particulate/fbm/articulated_assembly.h>
 #include <particulate/fbm/body_state_guard.h>
 #include <particulate/fbm/particle_parameters.h>
 #include <particulate/rigid/world.h>
@@ -14,16 +15,6 @@
 
 namespace particulate {
   namespace fbm {
-    /** Where and how a particle starts (a prescribed one at its motion's
-     *  state at t = 0). */
-    struct BodyStart
-    {
-      Eigen::Vector3d    position         = Eigen::Vector3d::Zero();
-      Eigen::Quaterniond orientation      = Eigen::Quaterniond::Identity();
-      Eigen::Vector3d    velocity         = Eigen::Vector3d::Zero();
-      Eigen::Vector3d    angular_velocity = Eigen::Vector3d::Zero();
-    };
-
     /** What the rigid engine needs beyond the particle set. */
     struct ParticleWorldFrame
     {
@@ -50,10 +41,12 @@ namespace particulate {
 
     /**
      * The rigid engine of a case: the particles as @p particles describes
-     * them, at @p starts (one per particle), fixed and prescribed ones
-     * immovable, rotations locked as the case locks them, with one material
-     * per density the engine sees (restitution and friction of the case);
-     * then the walls of @p frame's box.
+     * them, at @p starts (one per particle), fixed, prescribed and hinged
+     * ones immovable, rotations locked as the case locks them, with one
+     * material per density the engine sees (restitution and friction of the
+     * case); then the walls of @p frame's box. The head of an articulated
+     * body carries its parts' mass and inertia (assembly_inertia()), and
+     * its parts do not collide with it or with each other.
      */
     ParticleWorld
     build_particle_world(const ParticleParameters     &particles,

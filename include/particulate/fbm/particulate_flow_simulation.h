@@ -84,7 +84,8 @@ namespace particulate {
      * The coupled time loop of the fictitious boundary method (thesis
      * §5.3). run() is set_up() and then, per time step t_n -> t_n+1, the
      * stages
-     *  1. move_mesh(): prescribed bodies to t_n+1; the adapted mesh follows
+     *  1. move_mesh(): prescribed bodies to t_n+1, hinged parts on their
+     *     parents with the hinge at t_n+1; the adapted mesh follows
      *     the bodies, its velocity entering the flow's ALE term;
      *  2. impose_interface(): mark the velocity nodes inside the bodies and
      *     impose u = U + omega x (x - X) there (eq. 5.17);
@@ -226,6 +227,10 @@ namespace particulate {
 
       /** @name Parts of set_up() */
       /** @{ */
+      /** The prescribed and hinged particles' motions, and where every
+       *  particle starts. */
+      void
+      set_up_given_motions();
       void
       create_mesh();
       void
@@ -238,6 +243,10 @@ namespace particulate {
       read_checkpoint();
       /** @} */
 
+      /** Put each hinged part where its parent now is and its hinge at
+       *  @p time puts it, with the velocity of the composite motion. */
+      void
+      pose_hinged_parts(const double time);
       /** Mark the nodes around the bodies' current poses and give them the
        *  bodies' velocities. */
       void

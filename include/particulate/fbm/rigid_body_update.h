@@ -1,6 +1,7 @@
 #ifndef particulate_fbm_rigid_body_update_h
 #define particulate_fbm_rigid_body_update_h
 
+#include <particulate/fbm/articulated_assembly.h>
 #include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/energy_balance.h>
 #include <particulate/fbm/particle_parameters.h>
@@ -37,6 +38,11 @@ namespace particulate {
      * acceleration into a touching surface is dropped, which would
      * otherwise, fed back as m_a a_n, throw the body off the wall in the
      * next step.
+     *
+     * The head of an articulated body moves with the loads of all its
+     * parts (forces summed, torques taken about the head's centre) and
+     * with their mass and inertia (assembly_inertia(), products of inertia
+     * left out as the engine turns bodies about principal axes).
      */
     class RigidBodyUpdate
     {
@@ -45,9 +51,12 @@ namespace particulate {
        * @param particles the particles' densities and motions (body i of
        *   advance() is particle i), gravity and locked axes
        * @param fluid_density rho_f [kg/m^3]
+       * @param starts where the particles start: needed where some are
+       *   hinged, for their assemblies' inertia
        */
-      RigidBodyUpdate(const ParticleParameters &particles,
-                      const double              fluid_density);
+      RigidBodyUpdate(const ParticleParameters     &particles,
+                      const double                  fluid_density,
+                      const std::vector<BodyStart> &starts = {});
 
       /**
        * Advance @p world by @p time_step with the loads of @p states (one
@@ -77,17 +86,19 @@ namespace particulate {
       true_inertia_world(const unsigned int      i,
                          const rigid::RigidBody &body) const;
 
-      /** Its kinetic energy with the true mass and inertia [J]. */
+      /** Its kinetic energy with its own true mass and inertia [J] (a head
+       *  of an articulated body without its parts, which count their own). */
       double
       kinetic_energy(const unsigned int i, const rigid::RigidBody &body) const;
 
     private:
-      /** Force and torque the engine gets for @p body over the step. */
+      /** Force and torque the engine gets for particle @p i over the step
+       *  (with those of the parts hinged to it). */
       void
-      apply_loads(rigid::World            &world,
-                  const unsigned int       i,
-                  const rigid::BodyId      id,
-                  const BodyCouplingState &state) const;
+      apply_loads(rigid::World                         &world,
+                  const unsigned int                    i,
+                  const std::vector<rigid::BodyId>     &ids,
+                  const std::vector<BodyCouplingState> &states) const;
 
       /** Drop the acceleration's components into touching surfaces. */
       static void
@@ -103,6 +114,11 @@ namespace particulate {
       Eigen::Vector3d     gravity;
       std::array<bool, 3> locked_translation;
       std::array<bool, 3> locked_rotation;
+      /// the parts hinged to each particle
+      std::vector<std::vector<unsigned int>> parts;
+      /// for each free head of an articulated body: its assembly's true
+      /// mass and inertia (without added mass)
+      std::vector<AssemblyInertia> assembly;
     };
   } // namespace fbm
 } // namespace particulate
