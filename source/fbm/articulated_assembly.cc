@@ -32,8 +32,8 @@ namespace particulate {
                      const std::vector<unsigned int>        &parts,
                      const double                            extra_density)
     {
-      const Eigen::Vector3d &centre = starts[head].position;
-      AssemblyInertia        result;
+      const Eigen::Vector3d    &centre = starts[head].position;
+      AssemblyInertia           result;
       std::vector<unsigned int> members(1, head);
       members.insert(members.end(), parts.begin(), parts.end());
       for (const unsigned int j : members)
@@ -41,13 +41,13 @@ namespace particulate {
           const ParticleDescription &p   = particles[j];
           const double               rho = p.density + extra_density;
           const double               m   = rho * p.shape->volume();
-          const Eigen::Matrix3d      R = starts[j].orientation.toRotationMatrix();
-          const Eigen::Vector3d      r = starts[j].position - centre;
+          const Eigen::Matrix3d R = starts[j].orientation.toRotationMatrix();
+          const Eigen::Vector3d r = starts[j].position - centre;
           result.mass += m;
-          result.inertia
-            += R * (rho * p.shape->unit_inertia()) * R.transpose()
-               + m * (r.squaredNorm() * Eigen::Matrix3d::Identity()
-                      - r * r.transpose());
+          result.inertia += R * (rho * p.shape->unit_inertia()) * R.transpose()
+                            + m
+                                * (r.squaredNorm() * Eigen::Matrix3d::Identity()
+                                   - r * r.transpose());
         }
       const Eigen::Matrix3d R_head
         = starts[head].orientation.toRotationMatrix();

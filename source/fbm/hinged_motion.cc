@@ -32,7 +32,8 @@ namespace particulate {
 
     template <int dim>
     PrescribedState
-    HingedMotion<dim>::state(const double t, const PrescribedState &parent) const
+    HingedMotion<dim>::state(const double           t,
+                             const PrescribedState &parent) const
     {
       const Eigen::Quaterniond carry
         = parent.orientation * parent_start_orientation.conjugate();
@@ -42,7 +43,7 @@ namespace particulate {
       const Eigen::Vector3d hinge_now
         = parent.position + carry * (hinge_point - parent_start_position);
       const Eigen::Vector3d axis_now = carry * hinge_axis;
-      const double          rate = (angle(t + h) - angle(t - h)) / (2. * h);
+      const double          rate     = (angle(t + h) - angle(t - h)) / (2. * h);
 
       PrescribedState s;
       s.position = parent.position + carry * (relative - parent_start_position);

@@ -56,9 +56,9 @@ namespace particulate {
      *   unknown shape name, numbers of the wrong count, particles that are
      *   not numbered 0, 1, 2, ..., a prescribed motion with the wrong
      *   number of components, a hinged part without its hinge or hinged
-     *   to a particle that is missing, itself or hinged too, a bad line of the particle file, a generator
-     *   that cannot place its particles, or two initial particles that
-     *   overlap
+     *   to a particle that is missing, itself or hinged too, a bad line of the
+     * particle file, a generator that cannot place its particles, or two
+     * initial particles that overlap
      */
     std::vector<ParticleDescription>
     read_particle_set(dealii::ParameterHandler &prm,
