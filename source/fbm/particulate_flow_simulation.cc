@@ -352,6 +352,21 @@ namespace particulate {
 
 
     template <int dim>
+    std::vector<dealii::types::global_dof_index>
+    ParticulateFlowSimulation<dim>::joint_dofs() const
+    {
+      // a scan of every cell's node pairs: only where there are joints
+      const auto &joints = run_->joint_of_body;
+      if (std::none_of(joints.begin(), joints.end(), [](const int j) {
+            return j >= 0;
+          }))
+        return {};
+      return run_->interface->joint_dofs(joints);
+    }
+
+
+
+    template <int dim>
     void
     ParticulateFlowSimulation<dim>::create_mesh()
     {
@@ -703,9 +718,9 @@ namespace particulate {
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         r.states[i].load_centre = r.world->body(r.ids[i]).position;
       record_imposed();
-      r.flow->set_fictitious_boundary_values(
-        r.interface->constraint_values(r.interface_bodies),
-        r.interface->joint_dofs(r.joint_of_body));
+      r.flow->set_fictitious_boundary_values(r.interface->constraint_values(
+                                               r.interface_bodies),
+                                             joint_dofs());
     }
 
 
@@ -731,7 +746,7 @@ namespace particulate {
         }
       TimerOutput::Scope scope(r.timer, "fbm: constraints");
       auto values = r.interface->constraint_values(r.interface_bodies);
-      auto joints = r.interface->joint_dofs(r.joint_of_body);
+      auto joints = joint_dofs();
       record_imposed();
       restore_bodies(current);
       r.flow->set_fictitious_boundary_values(std::move(values),

@@ -19,23 +19,23 @@
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/sphere.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <cmath>
 #include <iostream>
 #include <string>
 
+#include "../fluid/test_utilities.h"
+
 namespace {
   using namespace particulate;
 
-  int failures = 0;
+  testing::Checker checker;
 
   void
   check(const bool ok, const std::string &what)
   {
-    if (!ok)
-      {
-        ++failures;
-        std::cerr << "FAILED: " << what << std::endl;
-      }
+    checker.check(ok, what);
   }
 
   core::FunctionExpression
@@ -227,17 +227,12 @@ namespace {
 } // namespace
 
 int
-main()
+main(int argc, char **argv)
 {
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check_kinematics<2>();
   check_kinematics<3>();
   check_assembly_inertia();
   check_engine();
-  if (failures > 0)
-    {
-      std::cerr << failures << " check(s) failed" << std::endl;
-      return 1;
-    }
-  std::cout << "all checks passed" << std::endl;
-  return 0;
+  return checker.exit_code();
 }

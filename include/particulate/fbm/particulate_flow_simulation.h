@@ -9,6 +9,8 @@
 #include <particulate/fluid/flow_simulation.h>
 #include <particulate/fluid/run_profile.h>
 
+#include <deal.II/base/types.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -243,6 +245,10 @@ namespace particulate {
       read_checkpoint();
       /** @} */
 
+      /** The covered velocity DoFs where parts of one articulated body
+       *  meet (none, without a scan, when there is no such body). */
+      std::vector<dealii::types::global_dof_index>
+      joint_dofs() const;
       /** Put each hinged part where its parent now is and its hinge at
        *  @p time puts it, with the velocity of the composite motion. */
       void
