@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -94,13 +95,17 @@ namespace particulate {
 
 
     BodyStateGuard::BodyStateGuard(
-      const DomainBox                  &domain,
-      const std::vector<rigid::BodyId> &particle_ids,
-      const double                      contact_distance)
+      const DomainBox                   &domain,
+      const std::vector<rigid::BodyId>  &particle_ids,
+      const double                       contact_distance,
+      const std::vector<ParticleMotion> &motions)
       : domain(domain)
       , ids(particle_ids)
       , contact_distance(contact_distance)
+      , motions(motions)
     {
+      if (!motions.empty() && motions.size() != ids.size())
+        throw std::logic_error("BodyStateGuard: one motion per particle");
       for (unsigned int i = 0; i < ids.size(); ++i)
         {
           if (ids[i] >= particle_of.size())
@@ -134,9 +139,56 @@ namespace particulate {
           check_finite(body, i, t);
           check_displacement(body, i, t, dt);
           check_walls(body, i, t, dt);
-          check_inside(body, i, t);
+          check_inside(body,
+                       i,
+                       t,
+                       "Make that face a wall with 'Domain walls' in "
+                       "subsection 'Particles'"
+                         + std::string(
+                           domain.is_column() ? " ('mantle' or 'all')" : "")
+                         + ", or end the run ('End time') before the "
+                           "particle reaches it.");
         }
       check_overlaps(world, t);
+    }
+
+
+
+    void
+    BodyStateGuard::check_given_motions(const rigid::World &world,
+                                        const double        t) const
+    {
+      for (unsigned int i = 0; i < motions.size(); ++i)
+        {
+          if (motions[i] != ParticleMotion::prescribed
+              && motions[i] != ParticleMotion::hinged)
+            continue;
+          const bool        hinged = motions[i] == ParticleMotion::hinged;
+          const std::string advice
+            = std::string("Nothing stops a body whose motion the case "
+                          "gives: change ")
+              + (hinged ? "its 'Hinge angle', 'Hinge point' or start pose, "
+                          "or its parent's motion," :
+                          "its prescribed motion or its start")
+              + " so that it stays inside the domain.";
+          const rigid::RigidBody     &body      = world.body(ids[i]);
+          const std::array<double, 6> beyond    = reach_beyond_walls(body);
+          const double                tolerance = wall_tolerance(body);
+          for (unsigned int face = 0; face < 2 * domain.dim; ++face)
+            if (beyond[face] > tolerance)
+              {
+                std::ostringstream message;
+                message << "Particle " << i
+                        << " (Motion = " << (hinged ? "hinged" : "prescribed")
+                        << ") reaches " << beyond[face] << " m beyond the wall "
+                        << (domain.is_column() && face < 4 ? "mantle" :
+                                                             face_names[face])
+                        << " at t = " << t << " s, more than the tolerance "
+                        << tolerance << " m. " << advice;
+                stop(message);
+              }
+          check_inside(body, i, t, advice);
+        }
     }
 
 
@@ -193,37 +245,59 @@ namespace particulate {
 
 
 
+    double
+    BodyStateGuard::wall_tolerance(const rigid::RigidBody &body) const
+    {
+      return std::max(contact_distance, 0.01 * body_size(body, domain.dim));
+    }
+
+
+
+    std::array<double, 6>
+    BodyStateGuard::reach_beyond_walls(const rigid::RigidBody &body) const
+    {
+      std::array<double, 6> beyond;
+      beyond.fill(-std::numeric_limits<double>::infinity());
+      const geometry::BoundingBox extent = placed_extent(body);
+      for_each_face(domain.dim,
+                    [&](const unsigned int d,
+                        const bool         positive,
+                        const unsigned int face) {
+                      if (!domain.walls[face]
+                          || (domain.is_column() && d < 2 && face > 0))
+                        return;
+                      const bool   mantle = domain.is_column() && d < 2;
+                      const double wall   = domain.wall_position(face);
+                      beyond[face]        = mantle ? reach_from_axis(domain,
+                                                              body.shape(),
+                                                              body.orientation,
+                                                              body.position)
+                                                - domain.column_radius :
+                                            positive ? extent.upper[d] - wall :
+                                                       wall - extent.lower[d];
+                    });
+      return beyond;
+    }
+
+
+
     void
     BodyStateGuard::check_walls(const rigid::RigidBody &body,
                                 const unsigned int      i,
                                 const double            t,
                                 const double            dt) const
     {
-      const double tolerance
-        = std::max(contact_distance, 0.01 * body_size(body, domain.dim));
-      const geometry::BoundingBox extent = placed_extent(body);
-      for_each_face(
-        domain.dim,
-        [&](const unsigned int d,
-            const bool         positive,
-            const unsigned int face) {
-          if (!domain.walls[face] || (domain.is_column() && d < 2 && face > 0))
-            return;
-          const bool   mantle = domain.is_column() && d < 2;
-          const double wall   = domain.wall_position(face);
-          const double beyond = mantle ? reach_from_axis(domain,
-                                                         body.shape(),
-                                                         body.orientation,
-                                                         body.position)
-                                           - domain.column_radius :
-                                positive ? extent.upper[d] - wall :
-                                           wall - extent.lower[d];
-          if (beyond <= tolerance)
-            return;
+      const double                tolerance = wall_tolerance(body);
+      const std::array<double, 6> beyond    = reach_beyond_walls(body);
+      for (unsigned int face = 0; face < 2 * domain.dim; ++face)
+        {
+          if (beyond[face] <= tolerance)
+            continue;
           std::ostringstream message;
           message << "Particle " << i << " crossed the wall "
-                  << (mantle ? "mantle" : face_names[face]) << " at t = " << t
-                  << " s: it reaches " << beyond
+                  << (domain.is_column() && face < 4 ? "mantle" :
+                                                       face_names[face])
+                  << " at t = " << t << " s: it reaches " << beyond[face]
                   << " m beyond it, more than the tolerance " << tolerance
                   << " m (the contact distance, at least 1 % of its size). "
                      "Its contact with the wall failed at its speed of "
@@ -235,7 +309,7 @@ namespace particulate {
                      "raise 'Rigid substeps' "
                      "in subsection 'Particles'.";
           stop(message);
-        });
+        }
     }
 
 
@@ -243,39 +317,39 @@ namespace particulate {
     void
     BodyStateGuard::check_inside(const rigid::RigidBody &body,
                                  const unsigned int      i,
-                                 const double            t) const
+                                 const double            t,
+                                 const std::string      &advice) const
     {
       const double tolerance
         = 1e-9 * (domain.upper - domain.lower).head(domain.dim).norm();
-      for_each_face(
-        domain.dim,
-        [&](const unsigned int d,
-            const bool         positive,
-            const unsigned int face) {
-          if (domain.mirror_planes[face])
-            return;
-          if (domain.is_column() && d < 2)
-            {
-              if (face == 0)
-                check_inside_column(body, i, t);
-              return;
-            }
-          const double x       = body.position[d];
-          const bool   outside = positive ? x > domain.upper[d] + tolerance :
-                                            x < domain.lower[d] - tolerance;
-          if (!outside)
-            return;
-          std::ostringstream message;
-          message << "Particle " << i << " left the domain at t = " << t
-                  << " s: its centre is at "
-                  << "xyz"[d] << " = " << x << " m, beyond the face "
-                  << face_names[face] << " at "
-                  << (positive ? domain.upper[d] : domain.lower[d])
-                  << " m, which is not a wall. Make that face a wall with "
-                     "'Domain walls' in subsection 'Particles', or end the "
-                     "run ('End time') before the particle reaches it.";
-          stop(message);
-        });
+      for_each_face(domain.dim,
+                    [&](const unsigned int d,
+                        const bool         positive,
+                        const unsigned int face) {
+                      if (domain.mirror_planes[face])
+                        return;
+                      if (domain.is_column() && d < 2)
+                        {
+                          if (face == 0)
+                            check_inside_column(body, i, t, advice);
+                          return;
+                        }
+                      const double x       = body.position[d];
+                      const bool   outside = positive ?
+                                               x > domain.upper[d] + tolerance :
+                                               x < domain.lower[d] - tolerance;
+                      if (!outside)
+                        return;
+                      std::ostringstream message;
+                      message
+                        << "Particle " << i << " left the domain at t = " << t
+                        << " s: its centre is at "
+                        << "xyz"[d] << " = " << x << " m, beyond the face "
+                        << face_names[face] << " at "
+                        << (positive ? domain.upper[d] : domain.lower[d])
+                        << " m, which is not a wall. " << advice;
+                      stop(message);
+                    });
     }
 
 
@@ -283,7 +357,8 @@ namespace particulate {
     void
     BodyStateGuard::check_inside_column(const rigid::RigidBody &body,
                                         const unsigned int      i,
-                                        const double            t) const
+                                        const double            t,
+                                        const std::string      &advice) const
     {
       const double rho = domain.distance_from_axis(body.position);
       if (rho <= domain.column_radius * (1. + 1e-9))
@@ -292,11 +367,7 @@ namespace particulate {
       message << "Particle " << i << " left the domain at t = " << t
               << " s: its centre is " << rho
               << " m from the column's axis, beyond the mantle at "
-              << domain.column_radius
-              << " m, which is not a wall. Make the mantle a wall with "
-                 "'Domain walls' in subsection 'Particles' ('mantle' or "
-                 "'all'), or end the run ('End time') before the particle "
-                 "reaches it.";
+              << domain.column_radius << " m, which is not a wall. " << advice;
       stop(message);
     }
 

@@ -189,5 +189,16 @@ namespace particulate {
           free.push_back(ids[i]);
       return free;
     }
+
+
+
+    std::vector<ParticleMotion>
+    particle_motions(const ParticleParameters &particles)
+    {
+      std::vector<ParticleMotion> motions;
+      for (const ParticleDescription &p : particles.bodies)
+        motions.push_back(p.motion);
+      return motions;
+    }
   } // namespace fbm
 } // namespace particulate

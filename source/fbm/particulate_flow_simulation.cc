@@ -224,10 +224,13 @@ namespace particulate {
       r.flow->set_initial_condition(0.);
       add_bodies();
       if (!parameters.restart)
-        check_contact_clearance(*r.world,
-                                r.ids,
-                                particle_p.bodies,
-                                r.world->parameters().contact_offset);
+        {
+          r.guard->check_given_motions(*r.world, 0.);
+          check_contact_clearance(*r.world,
+                                  r.ids,
+                                  particle_p.bodies,
+                                  r.world->parameters().contact_offset);
+        }
       set_up_interface();
 
       r.states.assign(r.ids.size(), BodyCouplingState());
@@ -452,7 +455,8 @@ namespace particulate {
       r.ids               = std::move(built.ids);
       r.guard             = std::make_unique<BodyStateGuard>(frame.domain,
                                                  r.ids,
-                                                 frame.contact_offset);
+                                                 frame.contact_offset,
+                                                 particle_motions(particle_p));
       r.energy
         = std::make_unique<EnergyBalance>(free_body_ids(particle_p, r.ids));
     }
@@ -970,6 +974,7 @@ namespace particulate {
       ++step;
       // the parts where their heads now are, for the output at t_n+1
       pose_hinged_parts(t);
+      r.guard->check_given_motions(*r.world, t);
       // bodies that do not move before a step are marked where it ends:
       // the interface of the next step, which the output at t_n+1 shows
       if (!(r.any_prescribed || r.mesh_follows))

@@ -170,7 +170,9 @@ namespace particulate {
       r.engine             = build_particle_world(particles, starts, frame);
       r.guard              = std::make_unique<BodyStateGuard>(r.domain,
                                                  r.engine.ids,
-                                                 frame.contact_offset);
+                                                 frame.contact_offset,
+                                                 particle_motions(particles));
+      r.guard->check_given_motions(*r.engine.world, 0.);
       check_contact_clearance(*r.engine.world,
                               r.engine.ids,
                               particles.bodies,
@@ -245,6 +247,7 @@ namespace particulate {
       r.t += k;
       ++r.step;
       r.guard->check_step(world, r.t, k);
+      r.guard->check_given_motions(world, r.t);
       r.summary.step_seconds.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count());

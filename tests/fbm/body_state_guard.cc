@@ -18,6 +18,11 @@
 // - a centre beyond a face that is not a wall stops the run ("left the
 //   domain"); on a mirror plane it does not;
 // - a fixed body is not checked;
+// - a body whose motion the case gives (immovable in the engine) is checked
+//   by check_given_motions(): a hinged sphere 0.05 m past the floor stops
+//   the run naming its motion, 0.005 m does not; a prescribed one whose
+//   centre is beyond an open face has left the domain; a fixed particle is
+//   not checked there either;
 // - two spheres of radius 0.1 m in the engine's contact graph that overlap
 //   by 0.005 m (2.5 % of the size 0.2 m) pass; by 0.02 m (10 %, beyond the
 //   5 % limit) they stop the run, naming both particles.
@@ -207,6 +212,49 @@ main()
     guard.start_step(s.world);
     s.body().position[2] = -1.;
     expect(guard, s.world, "fixed body below the floor", "");
+  }
+  {
+    const auto given = [&](const fbm::ParticleMotion motion,
+                           const Eigen::Vector3d    &position,
+                           const std::string        &what,
+                           const std::string        &expected) {
+      Scene                     s(sphere, true);
+      const fbm::BodyStateGuard guard(s.domain, {s.id}, 0.01, {motion});
+      s.body().position = position;
+      std::string message;
+      try
+        {
+          guard.check_given_motions(s.world, 0.5);
+        }
+      catch (const std::runtime_error &e)
+        {
+          message = e.what();
+        }
+      std::cout << what << ": " << (message.empty() ? "passes" : message)
+                << std::endl;
+      check(expected.empty() ? message.empty() :
+                               message.find(expected) != std::string::npos,
+            what + ": expected '" + expected + "', got '" + message + "'");
+    };
+    given(fbm::ParticleMotion::hinged,
+          Eigen::Vector3d(0.5, 0.5, 0.05),
+          "hinged sphere 0.05 m past the floor",
+          "Particle 0 (Motion = hinged) reaches 0.05 m beyond the wall z- "
+          "at t = 0.5 s");
+    given(fbm::ParticleMotion::hinged,
+          Eigen::Vector3d(0.5, 0.5, 0.095),
+          "hinged sphere 0.005 m past the floor",
+          "");
+    given(fbm::ParticleMotion::prescribed,
+          Eigen::Vector3d(1.05, 0.5, 0.5),
+          "prescribed sphere beyond the open face x+",
+          "Particle 0 left the domain at t = 0.5 s: its centre is at x = "
+          "1.05 m, beyond the face x+ at 1 m, which is not a wall. Nothing "
+          "stops a body whose motion the case gives");
+    given(fbm::ParticleMotion::fixed,
+          Eigen::Vector3d(0.5, 0.5, -1.),
+          "fixed particle below the floor",
+          "");
   }
   {
     rigid::WorldParameters parameters;

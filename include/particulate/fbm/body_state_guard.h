@@ -2,6 +2,7 @@
 #define particulate_fbm_body_state_guard_h
 
 #include <particulate/fbm/domain_box.h>
+#include <particulate/fbm/particle_description.h>
 #include <particulate/geometry/bounding_box.h>
 #include <particulate/rigid/world.h>
 
@@ -31,7 +32,11 @@ namespace particulate {
      *   smaller one's size (the contact pairs of the engine's contact
      *   graph, their overlap measured anew at the end of the step).
      * Bodies that are immovable in the engine (fixed and prescribed
-     * particles, walls) are not checked.
+     * particles, hinged parts, walls) are not checked there: nothing in
+     * the engine moves them. Those whose motion the case gives (prescribed
+     * particles and hinged parts) are checked by check_given_motions(),
+     * at the start and after each step: a motion that takes one through a
+     * wall or out of the domain is the case's error.
      */
     class BodyStateGuard
     {
@@ -50,10 +55,13 @@ namespace particulate {
        * @param particle_ids The particles' bodies in the world, in the
        *   order of the particle set (the messages name particle i).
        * @param contact_distance The rigid engine's contact distance [m].
+       * @param motions Each particle's motion, in the same order (empty:
+       *   check_given_motions() checks nothing).
        */
-      BodyStateGuard(const DomainBox                  &domain,
-                     const std::vector<rigid::BodyId> &particle_ids,
-                     const double                      contact_distance);
+      BodyStateGuard(const DomainBox                   &domain,
+                     const std::vector<rigid::BodyId>  &particle_ids,
+                     const double                       contact_distance,
+                     const std::vector<ParticleMotion> &motions = {});
 
       /** Remembers where the bodies are at the start of a step. */
       void
@@ -70,6 +78,16 @@ namespace particulate {
                  const double        t,
                  const double        dt) const;
 
+      /**
+       * Checks the particles whose motion the case gives (prescribed,
+       * hinged) where they are at @p t: within the walls (to the tolerance
+       * of check_step()) and with their centres inside the domain.
+       * @throw std::runtime_error naming the particle, its motion, the
+       *   face and the time
+       */
+      void
+      check_given_motions(const rigid::World &world, const double t) const;
+
     private:
       void
       check_finite(const rigid::RigidBody &body,
@@ -85,14 +103,23 @@ namespace particulate {
                   const unsigned int      i,
                   const double            t,
                   const double            dt) const;
+      /** How far @p body reaches beyond each wall face (x-, x+, y-, ...),
+       *  and the tolerance it is allowed; faces that are not walls: -inf. */
+      std::array<double, 6>
+      reach_beyond_walls(const rigid::RigidBody &body) const;
+      double
+      wall_tolerance(const rigid::RigidBody &body) const;
+      /** @p advice: what the message tells the user to do. */
       void
       check_inside(const rigid::RigidBody &body,
                    const unsigned int      i,
-                   const double            t) const;
+                   const double            t,
+                   const std::string      &advice) const;
       void
       check_inside_column(const rigid::RigidBody &body,
                           const unsigned int      i,
-                          const double            t) const;
+                          const double            t,
+                          const std::string      &advice) const;
       void
       check_overlaps(const rigid::World &world, const double t) const;
 
@@ -101,6 +128,7 @@ namespace particulate {
       /// the particle of each body id (-1 for walls and other bodies)
       std::vector<int>             particle_of;
       double                       contact_distance;
+      std::vector<ParticleMotion>  motions;
       std::vector<Eigen::Vector3d> start_positions;
     };
 

@@ -68,6 +68,10 @@ namespace particulate {
     std::vector<rigid::BodyId>
     free_body_ids(const ParticleParameters         &particles,
                   const std::vector<rigid::BodyId> &ids);
+
+    /** Each particle's motion, in the order of the particle set. */
+    std::vector<ParticleMotion>
+    particle_motions(const ParticleParameters &particles);
   } // namespace fbm
 } // namespace particulate
 
