@@ -123,6 +123,15 @@ namespace particulate {
 
     template <int dim>
     void
+    FlowDiscretisation<dim>::release_operator()
+    {
+      momentum_operator.reset();
+    }
+
+
+
+    template <int dim>
+    void
     FlowDiscretisation<dim>::setup_operator(
       const DoFHandler<dim> *velocity_dofs)
     {

@@ -30,7 +30,11 @@ namespace particulate {
 
 
     template <int dim>
-    NavierStokes<dim>::~NavierStokes() = default;
+    NavierStokes<dim>::~NavierStokes()
+    {
+      // the operator refers to the linear solver's velocity DoFs
+      discretisation.release_operator();
+    }
 
 
 
@@ -38,7 +42,9 @@ namespace particulate {
     void
     NavierStokes<dim>::setup_dofs()
     {
-      // the preconditioners before the matrices they were built from
+      // the operator before the velocity DoFs it works on, and the
+      // preconditioners before the matrices they were built from
+      discretisation.release_operator();
       linear_solver->clear();
       discretisation.distribute_dofs();
       linear_solver->setup(discretisation);

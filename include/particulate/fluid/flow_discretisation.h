@@ -70,6 +70,12 @@ namespace particulate {
       void
       setup_operator(const dealii::DoFHandler<dim> *velocity_dofs);
 
+      /** Drops the matrix-free operator: the DoF handler it works on
+       *  belongs to the linear solver, which must not clear or destroy it
+       *  while the operator still refers to it. */
+      void
+      release_operator();
+
       /** Interpolate the initial condition at @p time. */
       void
       set_initial_condition(const double time);
