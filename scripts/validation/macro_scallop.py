@@ -4,6 +4,7 @@
     python3 scripts/validation/macro_scallop.py series NEWTONIAN THICKENING DAT
     python3 scripts/validation/macro_scallop.py viscosity THICKENING DAT
     python3 scripts/validation/macro_scallop.py plot SERIES VISCOSITY PNG
+    python3 scripts/validation/macro_scallop.py study DAT NAME=FOLDER ...
 
 series: reads particle_0.dat (the head) of the two runs' output folders,
 prints the displacement D of each completed 4 s cycle as D/l (l = 22 mm)
@@ -14,6 +15,10 @@ has not got that far).
 viscosity: samples the `viscosity` field of the shear-thickening run at
 t = 0.5 s (closing) and t = 2.5 s (opening), where the shells stand at the
 same angle (123.5 degrees), on a grid around the swimmer, into DAT.
+
+study: the net displacement of every completed cycle of each named run
+(e.g. newtonian-r4-dt2.5-C500=output/...) into DAT, one row per run and
+cycle: name, cycle, D [mm], D/l, largest excursion [mm].
 
 plot: draws PNG from the two files: the displacement over the cycles, and
 the viscosity around the swimmer in the two frames.
@@ -187,6 +192,21 @@ def plot(args):
     print(f"wrote {args.png}")
 
 
+def write_study(args):
+    with open(args.dat, "w") as out:
+        out.write(
+            "# macro-scallop: net displacement per cycle of each run\n"
+            "# run  cycle  D [mm]  D/l  largest excursion [mm]\n"
+        )
+        for entry in args.runs:
+            name, folder = entry.split("=", 1)
+            for k, D, excursion in cycles(*head_track(folder)):
+                row = f"{name} {k} {D * 1e3:+.4f} {D / LENGTH:+.5f} {excursion * 1e3:.2f}"
+                print(row)
+                out.write(row + "\n")
+    print(f"wrote {args.dat}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="mode", required=True)
@@ -201,8 +221,16 @@ def main():
     p.add_argument("series")
     p.add_argument("viscosity")
     p.add_argument("png")
+    st = sub.add_parser("study")
+    st.add_argument("dat")
+    st.add_argument("runs", nargs="+", metavar="NAME=FOLDER")
     args = parser.parse_args()
-    {"series": write_series, "viscosity": write_viscosity, "plot": plot}[args.mode](args)
+    {
+        "series": write_series,
+        "viscosity": write_viscosity,
+        "plot": plot,
+        "study": write_study,
+    }[args.mode](args)
 
 
 if __name__ == "__main__":
