@@ -19,12 +19,24 @@
 //    I_a alpha_n + omega_n x (I_a omega_n) must keep the lag (its RMS over
 //    the second of two seconds) that of the true inertia (C = 0) to 5 % of
 //    it. Without its gyroscopic part the lag grows with 1 + C.
+// 6. viscous stiffness: a free sphere (C = 50) in a model fluid whose load is
+//    a drag -k (U - U*) on the velocity U = U_n + dt a_n the loop imposes
+//    (extrapolated), towards a force-free velocity U*. The error U - U*
+//    follows (m + m_a) z^2 + (2 k dt - m - 2 m_a) z + (m_a - k dt) = 0
+//    (doc/developer/fbm.md, "Viscous stiffness"): at k dt = 0.95 and 1.05
+//    times the bound (2 m + 4 m_a) / 3 it shrinks and grows by the largest
+//    root's modulus per step (measured over steps 20 to 60, to 1e-3); at
+//    k dt = 0.01 m_a it rings with the roots' period 2 pi / arg z (zero
+//    crossings over ten periods, to 1 %), which 2 pi sqrt(m_a dt / k)
+//    approximates to 3 % (1.7 %).
 #include <particulate/fbm/rigid_body_update.h>
 #include <particulate/geometry/ellipsoid.h>
 #include <particulate/geometry/half_space.h>
 #include <particulate/geometry/sphere.h>
 
+#include <array>
 #include <cmath>
+#include <complex>
 #include <iostream>
 #include <limits>
 #include <stdexcept>
@@ -271,7 +283,103 @@ namespace {
               "the added mass keeps the true inertia's gyroscopic lag");
       }
   }
+  /** The error U_n - U* of a free sphere (added-mass coefficient 50) under
+   *  the drag -k (U_n + dt a_n - U*), from rest, over @p steps steps. */
+  std::vector<double>
+  drag_response(const double       k_dt_over_bound,
+                const double       k_dt_over_m_a,
+                const double       dt,
+                const unsigned int steps,
+                double            &m,
+                double            &m_a)
+  {
+    auto p                    = particles();
+    p.gravity                 = Eigen::Vector3d::Zero();
+    p.added_mass_coefficient  = 50.;
+    rigid::World        world = make_world(p, false);
+    const rigid::BodyId id
+      = world.add_body(std::make_shared<geometry::Sphere>(radius),
+                       0,
+                       Eigen::Vector3d(0, 0, 1));
+    const fbm::RigidBodyUpdate update(p, rho_f);
+    m   = update.true_mass(0, world.body(id));
+    m_a = world.body(id).mass() - m;
+    const double k
+      = (k_dt_over_bound > 0. ? k_dt_over_bound * (2. * m + 4. * m_a) / 3. :
+                                k_dt_over_m_a * m_a)
+        / dt;
+    const double                        u_star = 0.01;
+    std::vector<fbm::BodyCouplingState> states(1);
+    std::vector<double>                 error;
+    for (unsigned int n = 0; n < steps; ++n)
+      {
+        const double imposed
+          = world.body(id).linear_velocity[0] + dt * states[0].acceleration[0];
+        states[0].fluid_load.force
+          = Eigen::Vector3d(-k * (imposed - u_star), 0, 0);
+        update.advance(world, {id}, states, dt, (n + 1) * dt);
+        error.push_back(world.body(id).linear_velocity[0] - u_star);
+      }
+    return error;
+  }
+
+  /** The roots of the error's characteristic polynomial. */
+  std::array<std::complex<double>, 2>
+  stiffness_roots(const double m, const double m_a, const double k_dt)
+  {
+    const std::complex<double> a = m + m_a, b = 2. * k_dt - m - 2. * m_a,
+                               c    = m_a - k_dt;
+    const std::complex<double> root = std::sqrt(b * b - 4. * a * c);
+    return {{(-b + root) / (2. * a), (-b - root) / (2. * a)}};
+  }
+
+  void
+  viscous_stiffness()
+  {
+    const double dt = 1e-3;
+    double       m = 0., m_a = 0.;
+    for (const double ratio : {0.95, 1.05})
+      {
+        const auto   e        = drag_response(ratio, 0., dt, 60, m, m_a);
+        const double k_dt     = ratio * (2. * m + 4. * m_a) / 3.;
+        const auto   z        = stiffness_roots(m, m_a, k_dt);
+        const double expected = std::max(std::abs(z[0]), std::abs(z[1]));
+        const double measured
+          = std::pow(std::abs(e[59]) / std::abs(e[19]), 1. / 40.);
+        std::printf("viscous stiffness: k dt = %.2f (2 m + 4 m_a) / 3: error "
+                    "x %.6f per step, largest root %.6f\n",
+                    ratio,
+                    measured,
+                    expected);
+        check(std::abs(measured - expected) < 1e-3,
+              "the error changes by the largest root per step");
+        check((ratio < 1.) == (measured < 1.),
+              "stable below the bound, unstable above");
+      }
+    const auto                e = drag_response(0., 0.01, dt, 20000, m, m_a);
+    std::vector<unsigned int> crossings;
+    for (unsigned int n = 1; n < e.size() && crossings.size() < 21; ++n)
+      if ((e[n - 1] < 0.) != (e[n] < 0.))
+        crossings.push_back(n);
+    const double period_steps = crossings.size() == 21 ?
+                                  (crossings[20] - crossings[0]) / 10. :
+                                  std::numeric_limits<double>::quiet_NaN();
+    const auto   z            = stiffness_roots(m, m_a, 0.01 * m_a);
+    const double exact        = 2. * M_PI / std::abs(std::arg(z[0]));
+    const double estimate     = 2. * M_PI * std::sqrt(1. / 0.01);
+    std::printf("viscous stiffness: rings with a period of %.2f steps; the "
+                "roots give %.2f, 2 pi sqrt(m_a dt / k) %.2f\n",
+                period_steps,
+                exact,
+                estimate);
+    check(std::abs(period_steps - exact) < 0.01 * exact,
+          "the ringing period is that of the roots");
+    check(std::abs(estimate - exact) < 0.03 * exact,
+          "2 pi sqrt(m_a dt / k) approximates it");
+  }
 } // namespace
+
+
 
 int
 main()
@@ -281,6 +389,7 @@ main()
   contact_stops_added_mass();
   fixed_and_diverging();
   gyroscopic_term_of_the_true_inertia();
+  viscous_stiffness();
   if (failures > 0)
     {
       std::cerr << failures << " check(s) failed" << std::endl;
