@@ -142,12 +142,10 @@ namespace particulate {
           check_inside(body,
                        i,
                        t,
-                       "Make that face a wall with 'Domain walls' in "
-                       "subsection 'Particles'"
-                         + std::string(
-                           domain.is_column() ? " ('mantle' or 'all')" : "")
-                         + ", or end the run ('End time') before the "
-                           "particle reaches it.");
+                       "Make it a wall with 'Domain walls' in subsection "
+                       "'Particles' (its name, 'mantle' for a column's, or "
+                       "'all'), or end the run ('End time') before the "
+                       "particle reaches it.");
         }
       check_overlaps(world, t);
     }
