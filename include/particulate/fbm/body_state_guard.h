@@ -103,10 +103,12 @@ namespace particulate {
                   const unsigned int      i,
                   const double            t,
                   const double            dt) const;
-      /** How far @p body reaches beyond each wall face (x-, x+, y-, ...),
-       *  and the tolerance it is allowed; faces that are not walls: -inf. */
+      /** How far @p body reaches beyond each wall face (x-, x+, y-, ...;
+       *  a column's mantle at x-); faces that are not walls: -inf. */
       std::array<double, 6>
       reach_beyond_walls(const rigid::RigidBody &body) const;
+      /** How far a body may reach beyond a wall: the contact distance, at
+       *  least 1 % of its size. */
       double
       wall_tolerance(const rigid::RigidBody &body) const;
       /** @p advice: what the message tells the user to do. */
