@@ -31,6 +31,20 @@ namespace particulate {
             f(d, positive, 2 * d + (positive ? 1 : 0));
       }
 
+      // what a message about a centre beyond an open face advises
+      const char *const free_body_advice
+        = "Make it a wall with 'Domain walls' in subsection 'Particles' "
+          "(its name, 'mantle' for a column's, or 'all'), or end the run "
+          "('End time') before the particle reaches it.";
+      const char *const hinged_part_advice
+        = "Nothing stops a body whose motion the case gives: change its "
+          "'Hinge angle', 'Hinge point' or start pose, or its parent's "
+          "motion, so that it stays inside the domain.";
+      const char *const prescribed_body_advice
+        = "Nothing stops a body whose motion the case gives: change its "
+          "prescribed motion or its start so that it stays inside the "
+          "domain.";
+
       [[noreturn]] void
       stop(const std::ostringstream &message)
       {
@@ -139,13 +153,7 @@ namespace particulate {
           check_finite(body, i, t);
           check_displacement(body, i, t, dt);
           check_walls(body, i, t, dt);
-          check_inside(body,
-                       i,
-                       t,
-                       "Make it a wall with 'Domain walls' in subsection "
-                       "'Particles' (its name, 'mantle' for a column's, or "
-                       "'all'), or end the run ('End time') before the "
-                       "particle reaches it.");
+          check_inside(body, i, t, free_body_advice);
         }
       check_overlaps(world, t);
     }
@@ -161,14 +169,9 @@ namespace particulate {
           if (motions[i] != ParticleMotion::prescribed
               && motions[i] != ParticleMotion::hinged)
             continue;
-          const bool        hinged = motions[i] == ParticleMotion::hinged;
-          const std::string advice
-            = std::string("Nothing stops a body whose motion the case "
-                          "gives: change ")
-              + (hinged ? "its 'Hinge angle', 'Hinge point' or start pose, "
-                          "or its parent's motion," :
-                          "its prescribed motion or its start")
-              + " so that it stays inside the domain.";
+          const bool  hinged = motions[i] == ParticleMotion::hinged;
+          const char *advice
+            = hinged ? hinged_part_advice : prescribed_body_advice;
           const rigid::RigidBody     &body      = world.body(ids[i]);
           const std::array<double, 6> beyond    = reach_beyond_walls(body);
           const double                tolerance = wall_tolerance(body);
@@ -316,7 +319,7 @@ namespace particulate {
     BodyStateGuard::check_inside(const rigid::RigidBody &body,
                                  const unsigned int      i,
                                  const double            t,
-                                 const std::string      &advice) const
+                                 const char             *advice) const
     {
       const double tolerance
         = 1e-9 * (domain.upper - domain.lower).head(domain.dim).norm();
@@ -356,7 +359,7 @@ namespace particulate {
     BodyStateGuard::check_inside_column(const rigid::RigidBody &body,
                                         const unsigned int      i,
                                         const double            t,
-                                        const std::string      &advice) const
+                                        const char             *advice) const
     {
       const double rho = domain.distance_from_axis(body.position);
       if (rho <= domain.column_radius * (1. + 1e-9))

@@ -116,12 +116,12 @@ namespace particulate {
       check_inside(const rigid::RigidBody &body,
                    const unsigned int      i,
                    const double            t,
-                   const std::string      &advice) const;
+                   const char             *advice) const;
       void
       check_inside_column(const rigid::RigidBody &body,
                           const unsigned int      i,
                           const double            t,
-                          const std::string      &advice) const;
+                          const char             *advice) const;
       void
       check_overlaps(const rigid::World &world, const double t) const;
 
