@@ -80,6 +80,9 @@ namespace particulate {
         = {{CoveredNodes::inside, "inside"},
            {CoveredNodes::halfway, "halfway"},
            {CoveredNodes::nearest, "nearest"}};
+      const core::ChoiceNames<Coupling> coupling_names
+        = {{Coupling::explicit_step, "explicit"},
+           {Coupling::iterated, "iterated"}};
       const core::ChoiceNames<ContainmentBackend> backend_names
         = {{ContainmentBackend::automatic, "auto"},
            {ContainmentBackend::cpu, "cpu"},
@@ -126,6 +129,14 @@ namespace particulate {
     to_string(const CoveredNodes choice)
     {
       return core::name_of(covered_nodes_names, choice);
+    }
+
+
+
+    std::string
+    to_string(const Coupling choice)
+    {
+      return core::name_of(coupling_names, choice);
     }
 
 
@@ -186,6 +197,40 @@ namespace particulate {
                         "which equals m a = F at convergence but stays stable "
                         "for density ratios near 1 at small time steps. 0 "
                         "gives the plain explicit coupling.");
+      prm.declare_entry(
+        "Coupling",
+        to_string(defaults.coupling),
+        Patterns::Selection(core::selection_of(coupling_names)),
+        "How a time step couples the fluid and the free bodies. explicit: "
+        "the fluid is solved once, with the bodies' velocities predicted "
+        "from the last step, and its loads move the bodies (thesis §5.3). "
+        "The added mass keeps it stable but delays the bodies' answer to "
+        "the fluid: for a light body under strong viscous forces the error "
+        "is of the size of C rho_f V / k (doc/developer/fbm.md, 'Viscous "
+        "stiffness'). iterated: the step is solved again from its start "
+        "with the velocities the bodies reached, accelerated by Aitken's "
+        "relaxation, until the two agree to 'Coupling tolerance': the "
+        "bodies' motion no longer depends on the added mass, at the cost "
+        "of that many fluid solves per step.");
+      prm.declare_entry("Coupling tolerance",
+                        core::number_text(defaults.coupling_tolerance),
+                        Patterns::Double(0.),
+                        "'Coupling = iterated': the largest difference "
+                        "between the velocities the fluid was given and "
+                        "those the free bodies reached, as a fraction of "
+                        "their speed (rotation counted at the body's "
+                        "bounding radius), or of the largest speed a free "
+                        "body has reached so far where that is more. The "
+                        "loads are only as precise as the flow's solvers: "
+                        "the iteration needs their 'Relative tolerance' "
+                        "well below the default (doc/developer/fbm.md, "
+                        "'Iterated coupling').");
+      prm.declare_entry(
+        "Maximum coupling iterations",
+        std::to_string(defaults.max_coupling_iterations),
+        Patterns::Integer(1),
+        "'Coupling = iterated': fluid solves a step may take; a step that "
+        "has not met 'Coupling tolerance' after them stops the run.");
       declare_experimental(prm, defaults);
       prm.declare_entry(
         "Force integral",
@@ -312,11 +357,20 @@ namespace particulate {
         = parse_axes(prm.get("Locked rotations"),
                      outline.where({"Particles"}, "Locked rotations"));
       added_mass_coefficient = prm.get_double("Added mass coefficient");
+      coupling = core::choice_named(coupling_names, prm.get("Coupling"));
+      coupling_tolerance      = prm.get_double("Coupling tolerance");
+      max_coupling_iterations = prm.get_integer("Maximum coupling iterations");
       prm.enter_subsection("Experimental");
       extrapolate_constraint_velocity
         = prm.get("Constraint velocity") == "extrapolated";
       midpoint_interface_position = prm.get("Interface position") == "midpoint";
       prm.leave_subsection();
+      if (coupling == Coupling::iterated && !extrapolate_constraint_velocity)
+        fail("Coupling",
+             "'iterated' gives the fluid the velocities the bodies are "
+             "predicted to reach, which 'Experimental / Constraint velocity "
+             "= current' leaves out; set it to 'extrapolated' or the "
+             "coupling to 'explicit'.");
       force_includes_fluid_inertia
         = prm.get("Force integral") == "stress and inertia";
       contact_solver

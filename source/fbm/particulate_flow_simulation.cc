@@ -5,6 +5,7 @@
 #include <particulate/fbm/body_coupling_state.h>
 #include <particulate/fbm/body_state_guard.h>
 #include <particulate/fbm/case_file.h>
+#include <particulate/fbm/coupling_iteration.h>
 #include <particulate/fbm/energy_balance.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hinged_motion.h>
@@ -61,6 +62,28 @@ namespace particulate {
               break;
           }
         return Marking::inside;
+      }
+
+      /** The message of a coupled step from @p t that @p iteration left
+       *  unconverged. */
+      std::string
+      unconverged_coupling(const double             t,
+                           const CouplingIteration &iteration,
+                           const double             tolerance)
+      {
+        return "The coupled step from t = " + std::to_string(t)
+               + " s did not converge in "
+               + std::to_string(iteration.n_iterations())
+               + " fluid solves: the velocities the fluid was given and "
+                 "those the free bodies reached still differ by "
+               + std::to_string(iteration.relative_residual())
+               + " of their speed ('Coupling tolerance' = "
+               + std::to_string(tolerance)
+               + "). The loads are only as precise as the flow's solvers: "
+                 "lower 'Relative tolerance' in subsections 'Nonlinear "
+                 "solver' and 'Linear solver', raise 'Maximum coupling "
+                 "iterations' in subsection 'Particles', or reduce 'Time "
+                 "step'.";
       }
     } // namespace
 
@@ -121,6 +144,12 @@ namespace particulate {
       bool mesh_follows = false;
       /// a free body shows the fluid a predicted interface
       bool predict_interface = false;
+      /// 'Coupling = iterated' with free bodies: the step's iteration
+      std::optional<CouplingIteration> coupling;
+      /// the iterates after a step's first keep its covered nodes and
+      /// give them new velocities only: the loads then change smoothly
+      /// with those velocities, and the iteration has a fixed point
+      bool keep_covered_nodes = false;
     };
 
 
@@ -182,10 +211,15 @@ namespace particulate {
             // everything of a step but output and diagnostics
             TimerOutput::Scope scope(run_->timer, "coupled step (total)");
             move_mesh(k);
-            impose_interface(k);
-            advance_fluid(k);
-            compute_loads(k);
-            advance_bodies(k);
+            if (run_->coupling)
+              iterate_coupled_step(k);
+            else
+              {
+                impose_interface(k);
+                advance_fluid(k);
+                compute_loads(k);
+                advance_bodies(k);
+              }
           }
           run_->summary.step_seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now()
@@ -258,6 +292,10 @@ namespace particulate {
       r.predict_interface = particle_p.any(ParticleMotion::free)
                             && (particle_p.extrapolate_constraint_velocity
                                 || particle_p.midpoint_interface_position);
+      if (particle_p.coupling == Coupling::iterated
+          && particle_p.any(ParticleMotion::free))
+        r.coupling.emplace(particle_p.coupling_tolerance,
+                           particle_p.max_coupling_iterations);
 
       impose_body_velocities();
       if (!parameters.restart)
@@ -714,10 +752,11 @@ namespace particulate {
     ParticulateFlowSimulation<dim>::impose_body_velocities()
     {
       Run &r = *run_;
-      {
-        TimerOutput::Scope scope(r.timer, "fbm: containment");
-        r.interface->classify(r.interface_bodies);
-      }
+      if (!r.keep_covered_nodes)
+        {
+          TimerOutput::Scope scope(r.timer, "fbm: containment");
+          r.interface->classify(r.interface_bodies);
+        }
       TimerOutput::Scope scope(r.timer, "fbm: constraints");
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         r.states[i].load_centre = r.world->body(r.ids[i]).position;
@@ -743,7 +782,8 @@ namespace particulate {
         TimerOutput::Scope scope(r.timer, "fbm: constraints");
         current = move_free_bodies_to_prediction(k);
       }
-      if (parameters.particles.midpoint_interface_position)
+      if (parameters.particles.midpoint_interface_position
+          && !r.keep_covered_nodes)
         {
           TimerOutput::Scope scope(r.timer, "fbm: containment");
           r.interface->classify(r.interface_bodies);
@@ -960,13 +1000,153 @@ namespace particulate {
     ParticulateFlowSimulation<dim>::advance_bodies(const double k)
     {
       Run &r = *run_;
-      {
-        TimerOutput::Scope scope(r.timer, "rigid bodies");
-        r.guard->start_step(*r.world);
-        r.rigid_update
-          ->advance(*r.world, r.ids, r.states, k, t + k, r.energy.get());
-        r.guard->check_step(*r.world, t + k, k);
-      }
+      r.guard->start_step(*r.world);
+      move_bodies(k);
+      r.guard->check_step(*r.world, t + k, k);
+      end_step(k);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::iterate_coupled_step(const double k)
+    {
+      Run &r = *run_;
+      // what an iterate changes, as the step found it
+      const auto                           flow_start   = r.flow->step_start();
+      const std::vector<BodyMotion>        bodies_start = body_motions();
+      const std::vector<BodyCouplingState> states_start = r.states;
+      const EnergyBalance                  energy_start = *r.energy;
+      fluid::SolveStatistics               statistics;
+      r.guard->start_step(*r.world);
+      r.coupling->start_step();
+      for (;;)
+        {
+          impose_interface(k);
+          advance_fluid(k);
+          statistics += r.statistics;
+          compute_loads(k);
+          const Eigen::VectorXd given = free_velocities(true);
+          move_bodies(k);
+          if (r.coupling->record(given,
+                                 free_velocities(false),
+                                 free_bodies_speed()))
+            break;
+          if (r.coupling->exhausted())
+            throw std::runtime_error(
+              unconverged_coupling(t,
+                                   *r.coupling,
+                                   parameters.particles.coupling_tolerance));
+          const Eigen::VectorXd next = r.coupling->next_given();
+          r.flow->return_to(flow_start);
+          restore_bodies(bodies_start);
+          r.states  = states_start;
+          *r.energy = energy_start;
+          predict_free_velocities(next, k);
+          r.keep_covered_nodes = true;
+        }
+      r.keep_covered_nodes = false;
+      r.statistics         = statistics;
+      r.guard->check_step(*r.world, t + k, k);
+      end_step(k);
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::move_bodies(const double k)
+    {
+      Run               &r = *run_;
+      TimerOutput::Scope scope(r.timer, "rigid bodies");
+      r.rigid_update
+        ->advance(*r.world, r.ids, r.states, k, t + k, r.energy.get());
+    }
+
+
+
+    template <int dim>
+    std::vector<typename ParticulateFlowSimulation<dim>::BodyMotion>
+    ParticulateFlowSimulation<dim>::body_motions() const
+    {
+      std::vector<BodyMotion> motions;
+      for (const rigid::BodyId id : run_->ids)
+        {
+          const rigid::RigidBody &b = run_->world->body(id);
+          motions.push_back(
+            {b.position, b.orientation, b.linear_velocity, b.angular_velocity});
+        }
+      return motions;
+    }
+
+
+
+    template <int dim>
+    Eigen::VectorXd
+    ParticulateFlowSimulation<dim>::free_velocities(const bool given) const
+    {
+      const Run                   &r = *run_;
+      std::vector<Eigen::Vector3d> entries;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        if (parameters.particles.bodies[i].motion == ParticleMotion::free)
+          {
+            const rigid::RigidBody &b = r.world->body(r.ids[i]);
+            const double            R = b.bounding_radius();
+            entries.push_back(given ? r.states[i].imposed_velocity :
+                                      b.linear_velocity);
+            entries.push_back(
+              R * (given ? r.states[i].imposed_angular : b.angular_velocity));
+          }
+      Eigen::VectorXd stacked(3 * entries.size());
+      for (unsigned int j = 0; j < entries.size(); ++j)
+        stacked.segment<3>(3 * j) = entries[j];
+      return stacked;
+    }
+
+
+
+    template <int dim>
+    double
+    ParticulateFlowSimulation<dim>::free_bodies_speed() const
+    {
+      double speed = 0.;
+      for (unsigned int i = 0; i < run_->ids.size(); ++i)
+        if (parameters.particles.bodies[i].motion == ParticleMotion::free)
+          speed = std::max(speed, run_->states[i].max_speed);
+      return speed;
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::predict_free_velocities(
+      const Eigen::VectorXd &next,
+      const double           k)
+    {
+      Run         &r = *run_;
+      unsigned int j = 0;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        if (parameters.particles.bodies[i].motion == ParticleMotion::free)
+          {
+            const rigid::RigidBody &b = r.world->body(r.ids[i]);
+            const double            R = b.bounding_radius();
+            r.states[i].acceleration
+              = (next.segment<3>(6 * j) - b.linear_velocity) / k;
+            r.states[i].angular_acceleration
+              = (next.segment<3>(6 * j + 3) / R - b.angular_velocity) / k;
+            ++j;
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::end_step(const double k)
+    {
+      Run              &r       = *run_;
       const std::string warning = r.energy->warning(t + k);
       if (!warning.empty())
         r.pcout << warning << std::endl;
@@ -1081,12 +1261,17 @@ namespace particulate {
     std::string
     ParticulateFlowSimulation<dim>::progress_details() const
     {
-      char                   buffer[96];
+      char                   buffer[128];
       const Eigen::Vector3d &u
         = run_->world->body(run_->ids[0]).linear_velocity;
       const unsigned int pockets = run_->flow->n_enclosed_pockets();
       int                n
         = std::snprintf(buffer, sizeof(buffer), "  |U_0| %.5g m/s", u.norm());
+      if (run_->coupling)
+        n += std::snprintf(buffer + n,
+                           sizeof(buffer) - n,
+                           "  coupling %u",
+                           run_->coupling->n_iterations());
       if (pockets > 0)
         std::snprintf(buffer + n,
                       sizeof(buffer) - n,

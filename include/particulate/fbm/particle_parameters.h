@@ -33,9 +33,22 @@ namespace particulate {
       cuda
     };
 
+    /** 'Coupling': how often a time step solves the fluid and moves the
+     *  free bodies. */
+    enum class Coupling
+    {
+      /// once: the fluid sees the velocities predicted from the last step
+      explicit_step,
+      /// again, from the step's start, until the velocities the fluid was
+      /// given are those the bodies reach
+      iterated
+    };
+
     /** The name of @p choice in a case file ("inside", "auto", ...). */
     std::string
     to_string(CoveredNodes choice);
+    std::string
+    to_string(Coupling choice);
     std::string
     to_string(ContainmentBackend choice);
 
@@ -56,7 +69,14 @@ namespace particulate {
       /// world axes about which the particles may not rotate
       std::array<bool, 3> locked_rotation = {{false, false, false}};
       /// C in m_a = C rho_f V of the added-mass-corrected coupling
-      double added_mass_coefficient = 1.;
+      double   added_mass_coefficient = 1.;
+      Coupling coupling               = Coupling::explicit_step;
+      /// an iterated step ends when the velocities the fluid was given
+      /// differ from those the bodies reached by at most this fraction of
+      /// the bodies' speed (rotation counted at the bounding radius), or
+      /// of the largest speed reached so far
+      double       coupling_tolerance      = 1e-4;
+      unsigned int max_coupling_iterations = 20;
       /// 'Constraint velocity = extrapolated': the covered nodes get the
       /// velocity predicted for the end of the step, U_n + dt a_n
       bool extrapolate_constraint_velocity = true;

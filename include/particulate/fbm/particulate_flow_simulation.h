@@ -99,6 +99,9 @@ namespace particulate {
      *     RigidBodyUpdate), the domain walls being fixed half-spaces, and
      *     BodyStateGuard stops the run if a body went wrong; bodies that do
      *     not move before a step are marked at t_n+1;
+     *     with `Coupling = iterated`, stages 2 to 5 are repeated from the
+     *     step's start until the velocities the fluid was given are those
+     *     the free bodies reach (iterate_coupled_step(), CouplingIteration);
      *  6. write_output(): the time series, the ParaView output and the
      *     progress line;
      *  7. write_checkpoint() when one is due.
@@ -168,6 +171,14 @@ namespace particulate {
        *  bodies that do not move before a step are marked there. */
       void
       advance_bodies(const double k);
+
+      /** Stages 2 to 5 with `Coupling = iterated`: solved again from the
+       *  step's start, the fluid given the velocities that Aitken's
+       *  relaxation takes from the last iterates, until the free bodies
+       *  reach those velocities. Stops the run if they do not within
+       *  'Maximum coupling iterations'. */
+      void
+      iterate_coupled_step(const double k);
 
       /** Stage 6: the time series, the fields when due, the progress line. */
       void
@@ -253,6 +264,28 @@ namespace particulate {
        *  @p time puts it, with the velocity of the composite motion. */
       void
       pose_hinged_parts(const double time);
+      /** The rigid engine's step with the loads (stage 5 without its
+       *  checks and without moving on to t_n+1). */
+      void
+      move_bodies(const double k);
+      /** The run moves on to t_n+1 after the bodies have moved. */
+      void
+      end_step(const double k);
+      /** Where every body is and how it moves. */
+      std::vector<BodyMotion>
+      body_motions() const;
+      /** The free bodies' velocities, rotation times the bounding radius:
+       *  those given to the fluid (@p given) or those the bodies have. */
+      Eigen::VectorXd
+      free_velocities(const bool given) const;
+      /** The largest speed a free body has reached so far [m/s]. */
+      double
+      free_bodies_speed() const;
+      /** Make the free bodies' predicted velocities @p next (as
+       *  free_velocities() stacks them) by the accelerations the
+       *  prediction uses. */
+      void
+      predict_free_velocities(const Eigen::VectorXd &next, const double k);
       /** Mark the nodes around the bodies' current poses and give them the
        *  bodies' velocities. */
       void

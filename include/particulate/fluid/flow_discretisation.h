@@ -139,6 +139,14 @@ namespace particulate {
         return system_rhs;
       }
 
+      /** Make @p ghosted, a solution get_solution() returned on the same
+       *  DoFs, the current one again. */
+      void
+      restore_solution(const BlockVector &ghosted)
+      {
+        solution = ghosted;
+      }
+
       /** Make @p iterate (locally owned layout) the current solution, its
        *  undetermined pressures set to zero. */
       void

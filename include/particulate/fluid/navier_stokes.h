@@ -176,6 +176,31 @@ namespace particulate {
       void
       load_state(std::istream &in);
 
+      /** The state a time step starts from, kept in memory. */
+      struct StepStart
+      {
+        BlockVector             solution;
+        TimeIntegrator::History history;
+      };
+
+      /** The current state, for a step that may have to be solved again
+       *  (an implicitly coupled FBM step). */
+      StepStart
+      step_start() const
+      {
+        return {discretisation.get_solution(), time_integrator.history()};
+      }
+
+      /** Return to @p start, as if the steps since step_start() had not
+       *  been taken. The mesh and DoFs must be the same; the kept
+       *  preconditioners stay. */
+      void
+      return_to(const StepStart &start)
+      {
+        discretisation.restore_solution(start.solution);
+        time_integrator.restore(start.history);
+      }
+
       /**
        * Drops the kept preconditioners (velocity AMG, Schur complement
        * approximation); the next solve rebuilds them from its matrix. A

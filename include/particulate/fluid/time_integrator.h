@@ -110,6 +110,29 @@ namespace particulate {
       void
       forget_history();
 
+      /** What advance() keeps from one step to the next. */
+      struct History
+      {
+        BlockVector previous_solution;
+        double      previous_time         = 0.;
+        bool        has_previous_solution = false;
+      };
+
+      History
+      history() const
+      {
+        return {previous_solution, previous_time, has_previous_solution};
+      }
+
+      /** Return to @p kept, which history() gave on the same DoFs. */
+      void
+      restore(const History &kept)
+      {
+        previous_solution     = kept.previous_solution;
+        previous_time         = kept.previous_time;
+        has_previous_solution = kept.has_previous_solution;
+      }
+
       /** Checkpoint: the kept solution (this rank's locally owned
        *  entries) and its time. */
       void
