@@ -60,11 +60,11 @@ namespace {
   {
     Eigen::MatrixXd A(1, 1);
     A << a;
-    const Eigen::VectorXd b = Eigen::VectorXd::Constant(1, 0.3);
+    const Eigen::VectorXd b      = Eigen::VectorXd::Constant(1, 0.3);
     const double          x_star = 0.3 / (1. - a);
     Eigen::VectorXd       x;
     bool                  converged = false;
-    const unsigned int    n = iterate(A, b, 1e-12, 10, x, converged);
+    const unsigned int    n         = iterate(A, b, 1e-12, 10, x, converged);
     checker.check(converged && n == 3,
                   "one unknown, a = " + std::to_string(a)
                     + ": converged with the third iterate (used "
@@ -89,7 +89,7 @@ namespace {
       = (Eigen::Matrix3d::Identity() - A).lu().solve(b);
     Eigen::VectorXd    x;
     bool               converged = false;
-    const unsigned int n = iterate(A, b, 1e-10, 100, x, converged);
+    const unsigned int n         = iterate(A, b, 1e-10, 100, x, converged);
     checker.check(converged && n < 104,
                   "three unknowns: converged in " + std::to_string(n)
                     + " iterations (the plain iteration: 104)");
@@ -123,7 +123,7 @@ namespace {
     fbm::ParticulateFlowSimulation<2> simulation(parameters,
                                                  name,
                                                  MPI_COMM_WORLD);
-    const auto summary = simulation.run();
+    const auto                        summary = simulation.run();
     return summary.velocity[0][1];
   }
 

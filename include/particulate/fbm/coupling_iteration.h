@@ -35,7 +35,8 @@ namespace particulate {
        *   the speed scale record() is given
        * @param max_iterations fluid solves a step may take
        */
-      CouplingIteration(const double tolerance, const unsigned int max_iterations);
+      CouplingIteration(const double       tolerance,
+                        const unsigned int max_iterations);
 
       /** Forget the last step's iterates. */
       void
