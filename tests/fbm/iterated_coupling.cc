@@ -16,7 +16,7 @@
 //    C = 20 it ends 14 % off. The check: explicit, the velocities after
 //    ten steps differ between C = 0.5 and C = 20 by more than 5 %;
 //    iterated (tolerance 1e-8), by less than 1e-6 relative (measured
-//    3e-8): the motion no longer depends on the added mass.
+//    4e-8): the motion no longer depends on the added mass.
 #include <particulate/fbm/coupling_iteration.h>
 #include <particulate/fbm/particulate_flow_simulation.h>
 
