@@ -1027,10 +1027,10 @@ namespace particulate {
           advance_fluid(k);
           statistics += r.statistics;
           compute_loads(k);
-          const Eigen::VectorXd given = free_velocities(true);
+          const Eigen::VectorXd given = free_velocities(Velocities::given);
           move_bodies(k);
           if (r.coupling->record(given,
-                                 free_velocities(false),
+                                 free_velocities(Velocities::reached),
                                  free_bodies_speed()))
             break;
           if (r.coupling->exhausted())
@@ -1084,15 +1084,17 @@ namespace particulate {
 
     template <int dim>
     Eigen::VectorXd
-    ParticulateFlowSimulation<dim>::free_velocities(const bool given) const
+    ParticulateFlowSimulation<dim>::free_velocities(
+      const Velocities which) const
     {
       const Run                   &r = *run_;
       std::vector<Eigen::Vector3d> entries;
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         if (parameters.particles.bodies[i].motion == ParticleMotion::free)
           {
-            const rigid::RigidBody &b = r.world->body(r.ids[i]);
-            const double            R = b.bounding_radius();
+            const rigid::RigidBody &b     = r.world->body(r.ids[i]);
+            const double            R     = b.bounding_radius();
+            const bool              given = which == Velocities::given;
             entries.push_back(given ? r.states[i].imposed_velocity :
                                       b.linear_velocity);
             entries.push_back(

@@ -274,10 +274,18 @@ namespace particulate {
       /** Where every body is and how it moves. */
       std::vector<BodyMotion>
       body_motions() const;
-      /** The free bodies' velocities, rotation times the bounding radius:
-       *  those given to the fluid (@p given) or those the bodies have. */
+      /** Which velocities of a body free_velocities() stacks. */
+      enum class Velocities
+      {
+        /// those the fluid was given over the step
+        given,
+        /// those the body has
+        reached
+      };
+      /** The free bodies' @p which velocities, rotation times the bounding
+       *  radius. */
       Eigen::VectorXd
-      free_velocities(const bool given) const;
+      free_velocities(const Velocities which) const;
       /** The largest speed a free body has reached so far [m/s]. */
       double
       free_bodies_speed() const;
