@@ -9,8 +9,15 @@
 // across ranks, also for cells on partition boundaries. All three markings
 // of the covered nodes are run: 'halfway' and 'nearest' also need the node
 // spacings shared across ranks, and decouple pressure modes of cut cells.
+// 'inside' is also run with 'Coupling = iterated': every rank must take the
+// same number of iterates in every step (the step's collective solves
+// would otherwise hang), and their result is the serial one.
 
 #include <particulate/fbm/particulate_flow_simulation.h>
+
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "../fluid/test_utilities.h"
 #include "run_case.h"
@@ -19,7 +26,10 @@ using namespace particulate;
 
 namespace {
   fbm::ParticulateFlowSummary
-  run(MPI_Comm comm, const std::string &marking, const std::string &output)
+  run(MPI_Comm           comm,
+      const std::string &marking,
+      const std::string &coupling,
+      const std::string &output)
   {
     const auto parameters = fbm::read_particulate_flow_case(
       testing::source_path("prm/settling-disk/settling-disk.prm"),
@@ -28,7 +38,7 @@ namespace {
       "subsection Particles\n"
       " subsection Particle 0\n  set Velocity = 0.02, -0.02\n end\n"
       " set Covered nodes = "
-        + marking
+        + marking + "\n set Coupling = " + coupling
         + "\nend\n"
           "subsection Nonlinear solver\n set Absolute tolerance = 1e-14\n"
           " set Relative tolerance = 1e-10\nend\n"
@@ -52,17 +62,27 @@ main(int argc, char **argv)
     = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   checker.check(n_ranks > 1, "runs on more than one rank");
 
-  for (const std::string marking : {"inside", "halfway", "nearest"})
+  for (const auto &[marking, coupling] :
+       std::vector<std::pair<std::string, std::string>>{{"inside", "explicit"},
+                                                        {"halfway", "explicit"},
+                                                        {"nearest", "explicit"},
+                                                        {"inside", "iterated"}})
     {
-      const auto parallel
-        = run(MPI_COMM_WORLD, marking, "settling_disk_parallel_" + marking);
+      const std::string           name     = marking + "_" + coupling;
+      const auto                  parallel = run(MPI_COMM_WORLD,
+                                marking,
+                                coupling,
+                                "settling_disk_parallel_" + name);
       fbm::ParticulateFlowSummary serial;
       if (rank == 0)
         {
-          serial
-            = run(MPI_COMM_SELF, marking, "settling_disk_serial_" + marking);
+          serial                  = run(MPI_COMM_SELF,
+                       marking,
+                       coupling,
+                       "settling_disk_serial_" + name);
           const std::string ranks = " on " + std::to_string(n_ranks)
-                                    + " ranks, '" + marking + "' marking";
+                                    + " ranks, '" + marking + "' marking, "
+                                    + coupling + " coupling";
           checker.check(parallel.n_steps == serial.n_steps
                           && serial.n_steps == 15,
                         "same number of steps (15)");
