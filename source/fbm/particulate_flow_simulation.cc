@@ -804,15 +804,13 @@ namespace particulate {
     ParticulateFlowSimulation<dim>::move_free_bodies_to_prediction(
       const double k)
     {
-      Run                    &r          = *run_;
-      const auto             &particle_p = parameters.particles;
-      std::vector<BodyMotion> current;
+      Run                          &r          = *run_;
+      const auto                   &particle_p = parameters.particles;
+      const std::vector<BodyMotion> current    = body_motions();
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         {
           rigid::RigidBody        &b = r.world->body(r.ids[i]);
           const BodyCouplingState &s = r.states[i];
-          current.push_back(
-            {b.position, b.orientation, b.linear_velocity, b.angular_velocity});
           // only free bodies are predicted; the others are where and how
           // they move over the step
           if (particle_p.bodies[i].motion != ParticleMotion::free)
