@@ -62,10 +62,19 @@ namespace particulate {
                            const std::vector<dealii::IndexSet> &relevant,
                            const MPI_Comm                       comm)
     {
-      owned_partitioning = owned;
-      communicator       = comm;
       previous_solution.reinit(owned, relevant, comm);
       has_previous_solution = false;
+    }
+
+
+
+    std::vector<dealii::IndexSet>
+    TimeIntegrator::owned_partitioning() const
+    {
+      std::vector<dealii::IndexSet> owned;
+      for (unsigned int b = 0; b < previous_solution.n_blocks(); ++b)
+        owned.push_back(previous_solution.block(b).locally_owned_elements());
+      return owned;
     }
 
 
@@ -73,7 +82,8 @@ namespace particulate {
     TimeIntegrator::BlockVector
     TimeIntegrator::make_owned_vector() const
     {
-      return BlockVector(owned_partitioning, communicator);
+      return BlockVector(owned_partitioning(),
+                         previous_solution.block(0).get_mpi_communicator());
     }
 
 
@@ -144,7 +154,7 @@ namespace particulate {
       core::write_binary<bool>(out, has_previous_solution);
       core::write_binary<double>(out, previous_time);
       if (has_previous_solution)
-        write_owned(out, previous_solution, owned_partitioning);
+        write_owned(out, previous_solution, owned_partitioning());
     }
 
 
@@ -157,7 +167,7 @@ namespace particulate {
       if (has_previous_solution)
         {
           BlockVector owned = make_owned_vector();
-          read_owned(in, owned, owned_partitioning);
+          read_owned(in, owned, owned_partitioning());
           previous_solution = owned;
         }
     }

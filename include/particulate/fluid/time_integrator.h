@@ -154,13 +154,17 @@ namespace particulate {
                    const double       time,
                    const double       time_step,
                    BlockVector       &rate) const;
+      /** The locally owned DoFs per block, read from the layout that
+       *  reinit() gave previous_solution. */
+      std::vector<dealii::IndexSet>
+      owned_partitioning() const;
+
       BlockVector
       make_owned_vector() const;
 
-      const InitialGuess            initial_guess;
-      std::vector<dealii::IndexSet> owned_partitioning;
-      MPI_Comm                      communicator = MPI_COMM_SELF;
-      /// the solution at the start of the previous time step (ghosted)
+      const InitialGuess initial_guess;
+      /// the solution at the start of the previous time step (ghosted);
+      /// its layout is the solver's
       BlockVector previous_solution;
       double      previous_time         = 0.;
       bool        has_previous_solution = false;
