@@ -1,11 +1,28 @@
 #include <particulate/fbm/coupling_iteration.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace particulate {
   namespace fbm {
+    namespace {
+      /** A change whose part orthogonal to the newer ones is below this
+       *  share of its length adds no direction. */
+      constexpr double dependence_threshold = 1e-2;
+
+      double
+      largest_entry(const Eigen::VectorXd &v)
+      {
+        return v.size() > 0 ? v.cwiseAbs().maxCoeff() : 0.;
+      }
+    } // namespace
+
+
+
     CouplingIteration::CouplingIteration(const double       tolerance,
                                          const unsigned int max_iterations)
       : tolerance(tolerance)
@@ -22,38 +39,66 @@ namespace particulate {
     CouplingIteration::start_step()
     {
       iterations = 0;
-      relaxation = 1.;
-      last_residual.resize(0);
+      reached.resize(0);
+      residual.resize(0);
+      residual_changes.clear();
+      reached_changes.clear();
     }
 
 
 
     bool
     CouplingIteration::record(const Eigen::VectorXd &given_now,
-                              const Eigen::VectorXd &reached,
+                              const Eigen::VectorXd &reached_now,
                               const double           speed_scale)
     {
-      if (given_now.size() != reached.size())
+      if (given_now.size() != reached_now.size())
         throw std::invalid_argument(
           "CouplingIteration: given and reached differ in size");
       ++iterations;
-      given    = given_now;
-      residual = reached - given_now;
-      speed    = std::max(speed_scale,
-                       reached.size() > 0 ? reached.cwiseAbs().maxCoeff() : 0.);
-      if (last_residual.size() == residual.size())
+      const Eigen::VectorXd residual_now = reached_now - given_now;
+      if (residual.size() == residual_now.size())
+        add_change(reached_now, residual_now);
+      reached  = reached_now;
+      residual = residual_now;
+      speed    = std::max(speed_scale, largest_entry(reached));
+      return largest_entry(residual) <= tolerance * speed;
+    }
+
+
+
+    void
+    CouplingIteration::add_change(const Eigen::VectorXd &reached_now,
+                                  const Eigen::VectorXd &residual_now)
+    {
+      residual_changes.push_front(residual_now - residual);
+      reached_changes.push_front(reached_now - reached);
+      drop_dependent_changes();
+    }
+
+
+
+    void
+    CouplingIteration::drop_dependent_changes()
+    {
+      // modified Gram-Schmidt, newest first
+      std::vector<Eigen::VectorXd> basis;
+      for (std::size_t j = 0; j < residual_changes.size();)
         {
-          // Aitken: the relaxation of the secant through the last two
-          // residuals; kept where they do not differ
-          const Eigen::VectorXd change = residual - last_residual;
-          const double          norm2  = change.squaredNorm();
-          if (norm2 > 0.)
-            relaxation *= -last_residual.dot(change) / norm2;
+          Eigen::VectorXd v      = residual_changes[j];
+          const double    length = v.norm();
+          for (const Eigen::VectorXd &q : basis)
+            v -= q.dot(v) * q;
+          const double orthogonal = v.norm();
+          if (length == 0. || orthogonal < dependence_threshold * length)
+            {
+              residual_changes.erase(residual_changes.begin() + j);
+              reached_changes.erase(reached_changes.begin() + j);
+              continue;
+            }
+          basis.push_back(v / orthogonal);
+          ++j;
         }
-      last_residual = residual;
-      const double largest
-        = residual.size() > 0 ? residual.cwiseAbs().maxCoeff() : 0.;
-      return largest <= tolerance * speed;
     }
 
 
@@ -61,7 +106,18 @@ namespace particulate {
     Eigen::VectorXd
     CouplingIteration::next_given() const
     {
-      return given + relaxation * residual;
+      if (residual_changes.empty())
+        return reached;
+      const Eigen::Index n = residual.size();
+      const Eigen::Index m = residual_changes.size();
+      Eigen::MatrixXd    V(n, m), W(n, m);
+      for (Eigen::Index j = 0; j < m; ++j)
+        {
+          V.col(j) = residual_changes[j];
+          W.col(j) = reached_changes[j];
+        }
+      const Eigen::VectorXd c = V.colPivHouseholderQr().solve(-residual);
+      return reached + W * c;
     }
 
 
@@ -69,8 +125,7 @@ namespace particulate {
     double
     CouplingIteration::relative_residual() const
     {
-      const double largest
-        = residual.size() > 0 ? residual.cwiseAbs().maxCoeff() : 0.;
+      const double largest = largest_entry(residual);
       return speed > 0. ? largest / speed : largest;
     }
   } // namespace fbm

@@ -208,8 +208,8 @@ namespace particulate {
         "the fluid: for a light body under strong viscous forces the error "
         "is of the size of C rho_f V / k (doc/developer/fbm.md, 'Viscous "
         "stiffness'). iterated: the step is solved again from its start "
-        "with the velocities the bodies reached, accelerated by Aitken's "
-        "relaxation, until the two agree to 'Coupling tolerance': the "
+        "with the velocities the bodies reached, accelerated by a "
+        "quasi-Newton method (IQN-ILS), until the two agree to 'Coupling tolerance': the "
         "bodies' motion no longer depends on the added mass, at the cost "
         "of that many fluid solves per step.");
       prm.declare_entry("Coupling tolerance",

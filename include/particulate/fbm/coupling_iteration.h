@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include <deque>
+
 namespace particulate {
   namespace fbm {
     /**
@@ -13,14 +15,31 @@ namespace particulate {
      * the velocities they end with, an implicit coupling, whatever the
      * added mass.
      *
-     * The next x is x + w (y - x), with Aitken's dynamic relaxation for w
-     * (Küttler & Wall, Comput. Mech. 43, 2008): from the last two
-     * residuals r = y - x,
-     *   w_j = -w_{j-1} r_{j-1} . (r_j - r_{j-1}) / |r_j - r_{j-1}|^2,
-     * which for one degree of freedom and a linear G is the secant method
-     * and lands on the fixed point in one step. The first w of a step is 1:
-     * the explicit step with the added mass, whose G contracts for the
-     * added masses that keep the explicit coupling stable.
+     * The iterates are accelerated by the interface quasi-Newton method
+     * with an inverse Jacobian from a least-squares model, IQN-ILS
+     * (Degroote, Bathe & Vierendeels, Comput. Struct. 87, 2009). With the
+     * residual r = G(x) - x, every iterate after the first adds the
+     * columns dr = r_j - r_{j-1} to V and dy = y_j - y_{j-1} to W. The
+     * next x is
+     *   x_next = y + W c,   c = argmin |V c + r|,
+     * the point where the residual, linearised over the directions
+     * explored in this step, vanishes; in the directions not yet explored
+     * it is the plain iteration x_next = y. For a linear G in n unknowns
+     * this lands on the fixed point with the (n + 1)-th given x (IQN-ILS
+     * then equals GMRES on (I - A) x = b); for one unknown it is the
+     * secant method.
+     *
+     * Why not a scalar relaxation: in a set of bodies most modes of G are
+     * contractions (the added mass C exceeds the body's true added mass),
+     * but two bodies close to each other squeeze the liquid between them,
+     * and the mode that moves them against each other has an added mass
+     * far above C: there G expands. One relaxation factor cannot serve
+     * both; the least-squares model picks the few expanding modes out of
+     * the iterates.
+     *
+     * Columns that are nearly linear combinations of newer ones are
+     * dropped (their part orthogonal to the newer ones below 1 % of their
+     * length): they carry no new direction, only round-off.
      *
      * The vectors stack the free bodies' generalized velocities, rotation
      * multiplied by the body's bounding radius, so that all entries are
@@ -74,17 +93,35 @@ namespace particulate {
         return iterations;
       }
 
+      /** Directions the least-squares model holds after the last
+       *  record(). */
+      unsigned int
+      n_directions() const
+      {
+        return residual_changes.size();
+      }
+
       /** max |y - x| / s of the last iterate. */
       double
       relative_residual() const;
 
     private:
+      /** Add the change from the previous iterate to V and W. */
+      void
+      add_change(const Eigen::VectorXd &reached_now,
+                 const Eigen::VectorXd &residual_now);
+
+      /** Drop the columns of V (and W) that newer ones nearly span. */
+      void
+      drop_dependent_changes();
+
       const double       tolerance;
       const unsigned int max_iterations;
       unsigned int       iterations = 0;
-      double             relaxation = 1.;
-      Eigen::VectorXd    given, residual, last_residual;
+      Eigen::VectorXd    reached, residual;
       double             speed = 0.;
+      /// V and W, newest column first
+      std::deque<Eigen::VectorXd> residual_changes, reached_changes;
     };
   } // namespace fbm
 } // namespace particulate

@@ -173,8 +173,9 @@ namespace particulate {
       advance_bodies(const double k);
 
       /** Stages 2 to 5 with `Coupling = iterated`: solved again from the
-       *  step's start, the fluid given the velocities that Aitken's
-       *  relaxation takes from the last iterates, until the free bodies
+       *  step's start, the fluid given the velocities that the
+       *  quasi-Newton model of CouplingIteration takes from the step's
+       *  iterates, until the free bodies
        *  reach those velocities. Stops the run if they do not within
        *  'Maximum coupling iterations'. */
       void
