@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -356,6 +358,71 @@ namespace particulate {
               values.emplace_back(node_dofs[i][c], u[c]);
           }
       return values;
+    }
+
+
+
+    template <int dim>
+    void
+    FictitiousBoundary<dim>::cover_films(const std::vector<Body> &bodies,
+                                         const std::vector<int>  &joint_of_body)
+    {
+      std::map<int, std::vector<unsigned int>> parts_of_joint;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (joint_of_body[b] >= 0)
+          parts_of_joint[joint_of_body[b]].push_back(b);
+      // decided on the marking of classify(), applied afterwards, so that
+      // the order of the parts does not matter
+      std::vector<std::pair<std::size_t, int>> film;
+      for (const auto &[joint, parts] : parts_of_joint)
+        for (const unsigned int p : parts)
+          {
+            const rigid::RigidBody     &body = *bodies[p].body;
+            const geometry::BoundingBox local_box
+              = body.shape().bounding_box().enlarged(2. * largest_half_spacing);
+            const geometry::BoundingBox box
+              = geometry::Pose(body.orientation, body.position)
+                  .to_world(local_box);
+            grid->for_each_in_box(box, [&](const std::size_t i) {
+              if (node_body[i] < 0)
+                {
+                  const int nearer = part_enclosing(bodies, parts, i);
+                  if (nearer >= 0)
+                    film.emplace_back(i, nearer);
+                }
+            });
+          }
+      for (const auto &[node, body] : film)
+        node_body[node] = body;
+    }
+
+
+
+    template <int dim>
+    int
+    FictitiousBoundary<dim>::part_enclosing(
+      const std::vector<Body>         &bodies,
+      const std::vector<unsigned int> &parts,
+      const std::size_t                node) const
+    {
+      const double spacing  = node_spacing(node);
+      unsigned int close    = 0;
+      int          nearest  = -1;
+      double       shortest = std::numeric_limits<double>::max();
+      for (const unsigned int p : parts)
+        {
+          const rigid::RigidBody &part = *bodies[p].body;
+          const double            distance
+            = part.shape().signed_distance(part.to_body(positions[node]));
+          if (distance < spacing)
+            ++close;
+          if (distance < shortest)
+            {
+              shortest = distance;
+              nearest  = p;
+            }
+        }
+      return close >= 2 ? nearest : -1;
     }
 
 

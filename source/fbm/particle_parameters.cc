@@ -80,6 +80,8 @@ namespace particulate {
         = {{CoveredNodes::inside, "inside"},
            {CoveredNodes::halfway, "halfway"},
            {CoveredNodes::nearest, "nearest"}};
+      const core::ChoiceNames<PartFilms> part_films_names
+        = {{PartFilms::resolve, "resolve"}, {PartFilms::cover, "cover"}};
       const core::ChoiceNames<Coupling> coupling_names
         = {{Coupling::explicit_step, "explicit"},
            {Coupling::iterated, "iterated"}};
@@ -137,6 +139,14 @@ namespace particulate {
     to_string(const Coupling choice)
     {
       return core::name_of(coupling_names, choice);
+    }
+
+
+
+    std::string
+    to_string(const PartFilms choice)
+    {
+      return core::name_of(part_films_names, choice);
     }
 
 
@@ -327,6 +337,19 @@ namespace particulate {
         "and above on coarse meshes (doc/developer/fbm.md, 'Which nodes'). halfway: the nodes outside by less than a quarter "
         "of the local node spacing, half the reach of nearest. The "
         "cuda containment backend supports 'inside' only.");
+      prm.declare_entry(
+        "Films between parts",
+        to_string(defaults.part_films),
+        Patterns::Selection(core::selection_of(part_films_names)),
+        "The liquid between two parts of one articulated body ('Motion = "
+        "hinged') where they come closer than a cell. resolve: its nodes "
+        "stay free; a node that parts close in on from two sides must "
+        "carry the whole squeeze flow, and the loads on the parts can jump "
+        "by orders of magnitude. cover: a free node within one node spacing "
+        "of two parts takes the motion of the nearer part, as if the film "
+        "moved with them (the contact distance does the like between "
+        "particles). Set cover where parts close on each other on a fine or "
+        "adapted mesh (doc/developer/fbm.md, 'Articulated bodies').");
       prm.leave_subsection();
     }
 
@@ -449,6 +472,8 @@ namespace particulate {
         = core::choice_named(backend_names, prm.get("Containment backend"));
       covered_nodes
         = core::choice_named(covered_nodes_names, prm.get("Covered nodes"));
+      part_films
+        = core::choice_named(part_films_names, prm.get("Films between parts"));
       prm.leave_subsection();
       if (containment_backend == ContainmentBackend::cuda
           && covered_nodes != CoveredNodes::inside)

@@ -393,6 +393,22 @@ namespace particulate {
 
 
     template <int dim>
+    void
+    ParticulateFlowSimulation<dim>::mark_covered_nodes()
+    {
+      Run &r = *run_;
+      r.interface->classify(r.interface_bodies);
+      const auto &joints = r.joint_of_body;
+      if (parameters.particles.part_films == PartFilms::cover
+          && std::any_of(joints.begin(), joints.end(), [](const int j) {
+               return j >= 0;
+             }))
+        r.interface->cover_films(r.interface_bodies, joints);
+    }
+
+
+
+    template <int dim>
     std::vector<dealii::types::global_dof_index>
     ParticulateFlowSimulation<dim>::joint_dofs() const
     {
@@ -755,7 +771,7 @@ namespace particulate {
       if (!r.keep_covered_nodes)
         {
           TimerOutput::Scope scope(r.timer, "fbm: containment");
-          r.interface->classify(r.interface_bodies);
+          mark_covered_nodes();
         }
       TimerOutput::Scope scope(r.timer, "fbm: constraints");
       for (unsigned int i = 0; i < r.ids.size(); ++i)
@@ -786,7 +802,7 @@ namespace particulate {
           && !r.keep_covered_nodes)
         {
           TimerOutput::Scope scope(r.timer, "fbm: containment");
-          r.interface->classify(r.interface_bodies);
+          mark_covered_nodes();
         }
       TimerOutput::Scope scope(r.timer, "fbm: constraints");
       auto values = r.interface->constraint_values(r.interface_bodies);

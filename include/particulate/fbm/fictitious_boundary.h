@@ -110,6 +110,18 @@ namespace particulate {
       std::vector<DofIndex>
       joint_dofs(const std::vector<int> &joint_of_body) const;
 
+      /**
+       * After classify(): the free nodes within one node spacing of two
+       * bodies of one joint (@p joint_of_body as for joint_dofs()) take
+       * the nearer body, so that a film between two parts of an
+       * articulated body that is thinner than a cell moves with them
+       * ('Films between parts = cover'). The distances are the shapes'
+       * signed distances, a node's spacing that of classify().
+       */
+      void
+      cover_films(const std::vector<Body> &bodies,
+                  const std::vector<int>  &joint_of_body);
+
       /** Per body, the number of nodes (all ranks) inside it: a measure
        *  of how well the mesh resolves it. Collective. */
       std::vector<unsigned long>
@@ -157,7 +169,22 @@ namespace particulate {
         return positions[i];
       }
 
+      /** The distance from node @p i to its nearest neighbour node (the
+       *  shortest over the cells around it). */
+      double
+      node_spacing(const unsigned int i) const
+      {
+        return 2. * half_spacing[i];
+      }
+
     private:
+      /** Of @p parts (bodies of one joint), the one nearest to node
+       *  @p node if at least two are within its node spacing, else -1. */
+      int
+      part_enclosing(const std::vector<Body>         &bodies,
+                     const std::vector<unsigned int> &parts,
+                     const std::size_t                node) const;
+
       const fluid::NavierStokes<dim> &flow;
       /// per node its position (z = 0 in 2D) and its dim velocity DoFs
       std::vector<Eigen::Vector3d>             positions;

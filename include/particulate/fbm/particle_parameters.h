@@ -25,6 +25,17 @@ namespace particulate {
       nearest
     };
 
+    /** 'Films between parts': the liquid between two parts of one
+     *  articulated body where they are closer than a cell. */
+    enum class PartFilms
+    {
+      /// its nodes stay free
+      resolve,
+      /// a free node within one node spacing of two parts takes the motion
+      /// of the nearer one
+      cover
+    };
+
     /** 'Containment backend': how the covered nodes are found. */
     enum class ContainmentBackend
     {
@@ -49,6 +60,8 @@ namespace particulate {
     to_string(CoveredNodes choice);
     std::string
     to_string(Coupling choice);
+    std::string
+    to_string(PartFilms choice);
     std::string
     to_string(ContainmentBackend choice);
 
@@ -105,6 +118,7 @@ namespace particulate {
       unsigned int          substeps            = 1;
       ContainmentBackend    containment_backend = ContainmentBackend::automatic;
       CoveredNodes          covered_nodes       = CoveredNodes::inside;
+      PartFilms             part_films          = PartFilms::resolve;
       /// faces of the mesh's bounding box that are mirror planes of the
       /// set-up (x-, x+, y-, y+, z-, z+): the particles lie on them, and the
       /// loads integrated over the part of each body inside the mesh are

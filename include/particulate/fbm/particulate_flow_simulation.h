@@ -257,6 +257,11 @@ namespace particulate {
       read_checkpoint();
       /** @} */
 
+      /** Mark the nodes the bodies cover where they stand, and with
+       *  'Films between parts = cover' the films between parts. */
+      void
+      mark_covered_nodes();
+
       /** The covered velocity DoFs where parts of one articulated body
        *  meet (none, without a scan, when there is no such body). */
       std::vector<dealii::types::global_dof_index>
