@@ -375,23 +375,28 @@ namespace particulate {
       // the order of the parts does not matter
       std::vector<std::pair<std::size_t, int>> film;
       for (const auto &[joint, parts] : parts_of_joint)
-        for (const unsigned int p : parts)
-          {
-            const rigid::RigidBody     &body = *bodies[p].body;
-            const geometry::BoundingBox local_box
-              = body.shape().bounding_box().enlarged(2. * largest_half_spacing);
-            const geometry::BoundingBox box
-              = geometry::Pose(body.orientation, body.position)
-                  .to_world(local_box);
-            grid->for_each_in_box(box, [&](const std::size_t i) {
-              if (node_body[i] < 0)
-                {
-                  const int nearer = part_enclosing(bodies, parts, i);
-                  if (nearer >= 0)
-                    film.emplace_back(i, nearer);
-                }
-            });
-          }
+        {
+          // the parts' boxes overlap at the hinges: judge each node once
+          std::vector<bool> judged(positions.size(), false);
+          for (const unsigned int p : parts)
+            {
+              const rigid::RigidBody     &body = *bodies[p].body;
+              const geometry::BoundingBox local_box
+                = body.shape().bounding_box().enlarged(2.
+                                                       * largest_half_spacing);
+              const geometry::BoundingBox box
+                = geometry::Pose(body.orientation, body.position)
+                    .to_world(local_box);
+              grid->for_each_in_box(box, [&](const std::size_t i) {
+                if (node_body[i] >= 0 || judged[i])
+                  return;
+                judged[i]        = true;
+                const int nearer = part_enclosing(bodies, parts, i);
+                if (nearer >= 0)
+                  film.emplace_back(i, nearer);
+              });
+            }
+        }
       for (const auto &[node, body] : film)
         node_body[node] = body;
     }
