@@ -25,7 +25,9 @@ BEAD is the output of the single bead settling in the closed column
   (for a bed of uniform solid fraction the centroid lies at half its
   height) and its solid fraction alpha(t) = N V_p / (pi R_c^2 h_b)
   (thesis eq. 6.6), both averaged over t > T (default: the last half of the
-  run), with their standard deviations;
+  run), with their standard deviations, and alpha's trend there (the
+  slope of its least-squares line: how far the bed still is from a
+  settled state);
 - the middle half of the bed (between a quarter and three quarters of h_b):
   its solid fraction and its beads' mean vertical velocity over t > T,
   against Richardson-Zaki's velocity of a suspension of that solid
@@ -202,6 +204,9 @@ def analyse(bed, bead, held, after, doc):
     print(f"  at t = 0: h_b = {history[0, 1]:.4g} m, alpha = {history[0, 2]:.4g}")
     print(f"  over t > {after:.3g} s: h_b = {h_mean:.4g} +- {h_std:.2g} m, "
           f"alpha = {a_mean:.4g} +- {a_std:.2g}")
+    trend = np.polyfit(t[late], history[late, 2], 1)[0]
+    print(f"  alpha's trend over t > {after:.3g} s (least-squares line): {trend:+.3g} per s, "
+          f"{trend * (t[-1] - after):+.3g} over the window")
     wall = 10 ** (-d / (2 * setup["radius"]))
     predictions = [("experiment", THESIS_U_0, THESIS_U_T)]
     for label, speed in speeds:

@@ -576,22 +576,29 @@ namespace particulate {
     void
     ParticulateFlowSimulation<dim>::warn_about_set_up() const
     {
-      const Run          &r         = *run_;
-      const auto         &particles = parameters.particles;
-      const double        rho_f     = parameters.flow.fluid.properties.density;
-      std::vector<double> sizes, density_ratios;
+      const Run   &r         = *run_;
+      const auto  &particles = parameters.particles;
+      const double rho_f     = parameters.flow.fluid.properties.density;
+      const std::vector<double> cell_sizes = cell_sizes_at_particles();
+      std::vector<double>       sizes, density_ratios, cells_at_free;
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         {
           sizes.push_back(body_size(r.world->body(r.ids[i]), dim));
           if (particles.bodies[i].motion == ParticleMotion::free)
-            density_ratios.push_back(particles.bodies[i].density / rho_f);
+            {
+              density_ratios.push_back(particles.bodies[i].density / rho_f);
+              cells_at_free.push_back(cell_sizes[i]);
+            }
         }
       for (const std::string &warning :
-           {set_up_warnings::resolution(sizes, cell_sizes_at_particles()),
+           {set_up_warnings::resolution(sizes, cell_sizes),
             set_up_warnings::coupling_stability(
               density_ratios,
               particles.added_mass_coefficient,
               dim),
+            set_up_warnings::contact_distance(
+              r.world->parameters().contact_offset,
+              cells_at_free),
             set_up_warnings::thin_surface_meshes(particles.bodies)})
         if (!warning.empty())
           r.pcout << warning << std::endl;

@@ -7,6 +7,14 @@
 namespace particulate {
   namespace fbm {
     namespace set_up_warnings {
+      namespace {
+        /// the fraction of a cell below which a contact distance counts as
+        /// thinner than the cell: room for the cells of a graded mesh
+        /// around a particle and for rounding (the automatic contact
+        /// distance is the smallest cell edge)
+        constexpr double thinnest_resolved_film = 0.9;
+      } // namespace
+
       std::string
       resolution(const std::vector<double> &sizes,
                  const std::vector<double> &cell_sizes)
@@ -82,6 +90,36 @@ namespace particulate {
                    "at least "
                 << (added_mass - density_ratios[lightest]) / 2.
                 << " (the default is 1).";
+        return message.str();
+      }
+
+
+
+      std::string
+      contact_distance(const double               contact_distance,
+                       const std::vector<double> &cell_sizes)
+      {
+        unsigned int n_thin       = 0;
+        double       largest_cell = 0.;
+        for (const double h : cell_sizes)
+          if (contact_distance < thinnest_resolved_film * h)
+            {
+              ++n_thin;
+              largest_cell = std::max(largest_cell, h);
+            }
+        if (n_thin == 0)
+          return "";
+        std::ostringstream message;
+        message << "Warning: the contact distance, " << contact_distance
+                << " m, is below the cell size at " << n_thin << " of "
+                << cell_sizes.size() << " free particle(s) (up to "
+                << largest_cell
+                << " m): films between particles, or between a particle "
+                   "and a wall, thinner than a cell are not resolved, and "
+                   "the pressure in them can throw particles together or "
+                   "apart (doc/developer/fbm.md, \"Near contact\"). Set "
+                   "'Contact distance' in subsection 'Particles' to the "
+                   "cell size or more where particles meet.";
         return message.str();
       }
 

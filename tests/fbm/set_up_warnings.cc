@@ -10,6 +10,11 @@
 //   coefficient it needs, 0.25; ratio 1.1 is not; a sphere (C_a = 1/2) of
 //   ratio 0.5 is at the limit and passes; with the default C = 1 no ratio
 //   is warned about;
+// - contact distance: 1 mm against cells of 1.4 and 2 mm at two free
+//   particles (the fluidized bed's mesh) is warned about, both counted
+//   and the larger cell named; 2 mm is not, nor an unknown cell (0), nor
+//   a contact distance of one cell rounded down (the automatic one on a
+//   uniform mesh);
 // - thin surface meshes: a plate 4 mm thick (a box mesh of half extents
 //   50, 50, 2 mm) with a map spacing of 3 mm resolves less than two map
 //   cells of thickness and is warned about by name; at the automatic
@@ -68,6 +73,15 @@ main()
          "");
   expect(set_up_warnings::coupling_stability({0.01, 0.5}, 1., 2),
          "disks of ratio 0.01 and 0.5, C = 1",
+         "");
+  expect(set_up_warnings::contact_distance(0.001, {0.0014, 0.002}),
+         "contact distance 1 mm, cells of 1.4 and 2 mm",
+         "below the cell size at 2 of 2 free particle(s) (up to 0.002 m)");
+  expect(set_up_warnings::contact_distance(0.002, {0.0014, 0.002, 0.}),
+         "contact distance 2 mm, cells of 1.4 and 2 mm",
+         "");
+  expect(set_up_warnings::contact_distance(0.000625 * (1. - 1e-15), {0.000625}),
+         "contact distance one cell rounded down",
          "");
   const auto plate = particulate::geometry::mesh_generators::box(
     Eigen::Vector3d(0.05, 0.05, 0.002),

@@ -51,6 +51,20 @@ namespace particulate {
                          const unsigned int         dim);
 
       /**
+       * A contact distance below the cell size at the free particles: a
+       * film between two particles, or between a particle and a wall,
+       * thinner than a cell has too few free velocity nodes to carry its
+       * squeeze and shear flow, and the pressure in it can throw particles
+       * together or apart (doc/developer/fbm.md, "Near contact").
+       * @param contact_distance the rigid engine's contact offset [m]
+       * @param cell_sizes the size of the cell at each free particle's
+       *   centre [m] (0: not known)
+       */
+      std::string
+      contact_distance(const double               contact_distance,
+                       const std::vector<double> &cell_sizes);
+
+      /**
        * A surface-mesh shape whose distance map resolves it less than two
        * map cells thick: its thin parts may let nodes and contacts through.
        * @param names the shapes' names
