@@ -51,7 +51,8 @@ namespace particulate {
                          const unsigned int         dim);
 
       /**
-       * A contact distance below the cell size at the free particles: a
+       * A contact distance below the cell size (0.9 of it, for graded
+       * meshes and rounding) at a free particle's centre: a
        * film between two particles, or between a particle and a wall,
        * thinner than a cell has too few free velocity nodes to carry its
        * squeeze and shear flow, and the pressure in it can throw particles
