@@ -4,6 +4,7 @@ through the liquid of a closed box, and the liquid it displaces, which
 rises through the bed and lifts particles again before they settle.
 
     scripts/validation/dgs.py OUTPUT [--times T1 T2 T3] [--doc DIR]
+        [--min-lifted N] [--max-moving F] [--min-rising M]
     scripts/validation/dgs.py --redraw DIR
 
 reads the run in OUTPUT (particle_set.csv, particles.dat or
@@ -17,6 +18,12 @@ particle_<i>.dat, flow.pvd with its flow_<step>.*.vtu) and prints
   liquid within the bed's height (between the 10th and 90th percentiles of
   the particles' heights), against the single sphere's Stokes velocity;
 - the particles still moving at the end.
+
+With --min-lifted, --max-moving or --min-rising it exits with an error
+naming each bound the run misses: fewer than N particles lifted by more than
+a diameter, more than the fraction F of them faster than a tenth of the
+Stokes velocity at the end, or the liquid never rising through the bed at M
+times the Stokes velocity.
 
 With --doc it writes into DIR the series dgs.dat (the heights of the three
 most lifted particles and the bed's mean height against time),
@@ -98,7 +105,7 @@ def grid_sample(points, velocity, cells):
                             velocity[keep][:, 2]])
 
 
-def analyse(folder, times, doc):
+def analyse(folder, times, doc, bounds=None):
     radii, series = particles(folder)
     time = series[0]["time"]
     heights = np.array([s["z"] for s in series])
@@ -123,6 +130,7 @@ def analyse(folder, times, doc):
     y_mid = 0.5 * (lower[1] + upper[1])
     print("# time w_up w_down w_up_in_bed bed_z10 bed_z90   (mid-plane y = %g)" % y_mid)
     snapshots = flow_snapshots(folder)
+    rising_in_bed = 0.
     for t, step in snapshots:
         points, velocity = mid_plane(folder, step, y_mid)
         k = min(np.searchsorted(time, t - 1e-12), len(time) - 1)
@@ -131,6 +139,17 @@ def analyse(folder, times, doc):
         w = velocity[:, 2]
         print(f"{t:.4g} {w.max():.4g} {w.min():.4g} {w[in_bed].max():.4g} "
               f"{z10:.4g} {z90:.4g}")
+        if in_bed.any():
+            rising_in_bed = max(rising_in_bed, w[in_bed].max())
+    print(f"fastest liquid rising in the bed: {rising_in_bed:.4g}, "
+          f"{rising_in_bed / u_stokes:.3g} times the Stokes velocity")
+    if bounds:
+        failures = check(bounds, int(np.sum(lifts > 2 * r)),
+                         int(np.sum(speed > 0.1 * u_stokes)), len(series),
+                         rising_in_bed / u_stokes)
+        if failures:
+            sys.exit("FAILED: " + "; ".join(failures))
+        print("all checks passed")
 
     if doc:
         table = np.column_stack([time] + [heights[i] for i in order[:3]]
@@ -151,6 +170,21 @@ def analyse(folder, times, doc):
         write_table(os.path.join(doc, "dgs-slice-particles.dat"), ["time", "x", "z"],
                     np.concatenate(dots))
         draw(doc)
+
+
+def check(bounds, lifted, moving, count, rising):
+    """The run's physics against @p bounds: which of them it misses."""
+    failures = []
+    if bounds.min_lifted is not None and lifted < bounds.min_lifted:
+        failures.append(f"{lifted} particles lifted by more than a diameter, "
+                        f"fewer than {bounds.min_lifted}")
+    if bounds.max_moving is not None and moving > bounds.max_moving * count:
+        failures.append(f"{moving} of {count} particles still move at the end, "
+                        f"more than {bounds.max_moving:g} of them")
+    if bounds.min_rising is not None and rising < bounds.min_rising:
+        failures.append(f"the liquid rises through the bed at {rising:.3g} times the "
+                        f"Stokes velocity, less than {bounds.min_rising:g}")
+    return failures
 
 
 def draw(doc):
@@ -203,11 +237,22 @@ def main():
     parser.add_argument("--times", nargs=3, type=float, default=[2, 4, 6])
     parser.add_argument("--doc")
     parser.add_argument("--redraw", metavar="DIR")
+    parser.add_argument("--min-lifted", type=int,
+                        help="fail if fewer particles are lifted by more than a diameter")
+    parser.add_argument("--max-moving", type=float,
+                        help="fail if a larger fraction of the particles moves faster than a "
+                             "tenth of the Stokes velocity at the end")
+    parser.add_argument("--min-rising", type=float,
+                        help="fail if the liquid never rises through the bed faster than this "
+                             "multiple of the Stokes velocity")
+    parser.add_argument("--label", help="the run's name (ignored; for the test driver)")
     args = parser.parse_args()
     if args.redraw:
         draw(args.redraw)
     elif args.folder:
-        analyse(args.folder, args.times, args.doc)
+        checks = [args.min_lifted, args.max_moving, args.min_rising]
+        analyse(args.folder, args.times, args.doc,
+                args if any(c is not None for c in checks) else None)
     else:
         parser.error("give OUTPUT or --redraw DIR")
 
