@@ -13,7 +13,6 @@
 //  4. the loads are linear in A: halving the time step doubles them.
 // On 2 ranks: the loads and the reference integrals are sums over ranks.
 
-#include <particulate/core/mesh.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/fbm/hydrodynamic_forces.h>
 #include <particulate/geometry/cylinder.h>
@@ -21,8 +20,6 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/timer.h>
-#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/fe/fe_values.h>
 
 #include "../fluid/test_utilities.h"
@@ -148,16 +145,9 @@ main(int argc, char **argv)
 
   for (const bool rotation : {false, true})
     {
-      const auto parameters
-        = testing::library_case("dfg-2d-2", rotation ? rotating : uniform);
-      dealii::parallel::fullydistributed::Triangulation<2> tria(MPI_COMM_WORLD);
-      core::create_mesh(parameters.mesh, tria);
-      dealii::TimerOutput    timer(MPI_COMM_WORLD,
-                                std::cout,
-                                dealii::TimerOutput::never,
-                                dealii::TimerOutput::wall_times);
-      fluid::NavierStokes<2> flow(parameters.fluid, tria, timer);
-      flow.setup_dofs();
+      testing::CaseFlow<2> channel(
+        testing::library_case("dfg-2d-2", rotation ? rotating : uniform));
+      fluid::NavierStokes<2> &flow = channel.flow;
       flow.set_initial_condition(0.);
       const double rho = flow.get_parameters().properties.density;
 

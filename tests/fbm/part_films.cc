@@ -12,13 +12,9 @@
 //   classify() covered changes;
 // - the same parts in two different joints (or none) keep every node as
 //   classify() left it: films are only covered within one body.
-#include <particulate/core/mesh.h>
 #include <particulate/fbm/fictitious_boundary.h>
 #include <particulate/geometry/box.h>
 #include <particulate/geometry/cylinder.h>
-
-#include <deal.II/base/timer.h>
-#include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <cmath>
 #include <limits>
@@ -59,15 +55,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto parameters = testing::library_case("dfg-2d-1", "");
-  dealii::parallel::fullydistributed::Triangulation<2> tria(MPI_COMM_WORLD);
-  core::create_mesh(parameters.mesh, tria);
-  dealii::TimerOutput    timer(MPI_COMM_WORLD,
-                            std::cout,
-                            dealii::TimerOutput::never,
-                            dealii::TimerOutput::wall_times);
-  fluid::NavierStokes<2> flow(parameters.fluid, tria, timer);
-  flow.setup_dofs();
+  testing::CaseFlow<2>    channel(testing::library_case("dfg-2d-1", ""));
+  fluid::NavierStokes<2> &flow = channel.flow;
 
   rigid::World               world;
   const auto                 material = world.add_material({});

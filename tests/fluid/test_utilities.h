@@ -5,10 +5,14 @@
 // report checks in a uniform way.
 
 #include <particulate/core/input_file.h>
+#include <particulate/core/mesh.h>
 #include <particulate/fluid/flow_simulation.h>
+#include <particulate/fluid/navier_stokes.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <cmath>
 #include <cstdio>
@@ -19,6 +23,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace particulate {
@@ -135,6 +140,40 @@ namespace particulate {
       fluid::FlowSimulation<dim> simulation(parameters, name, comm);
       return simulation.run();
     }
+
+    /** A case's parameters, mesh and flow solver with its DoFs set up, on
+     *  MPI_COMM_WORLD and without timer output: the set-up of the tests
+     *  that work on a flow field without running the case. It keeps the
+     *  parameters, which the solver refers to. */
+    template <int dim>
+    struct CaseFlow
+    {
+      explicit CaseFlow(fluid::FlowCaseParameters case_parameters)
+        : parameters(std::move(case_parameters))
+        , tria(MPI_COMM_WORLD)
+        , timer(MPI_COMM_WORLD,
+                std::cout,
+                dealii::TimerOutput::never,
+                dealii::TimerOutput::wall_times)
+        , flow(parameters.fluid, meshed(tria, parameters), timer)
+      {
+        flow.setup_dofs();
+      }
+
+      const fluid::FlowCaseParameters                        parameters;
+      dealii::parallel::fullydistributed::Triangulation<dim> tria;
+      dealii::TimerOutput                                    timer;
+      fluid::NavierStokes<dim>                               flow;
+
+    private:
+      static dealii::parallel::fullydistributed::Triangulation<dim> &
+      meshed(dealii::parallel::fullydistributed::Triangulation<dim> &tria,
+             const fluid::FlowCaseParameters                        &parameters)
+      {
+        core::create_mesh(parameters.mesh, tria);
+        return tria;
+      }
+    };
 
     /** Print one check and remember whether it failed. */
     class Checker
