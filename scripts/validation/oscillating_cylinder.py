@@ -20,7 +20,9 @@ body-fitted run given is the reference of the total-variation ratio.
 Prints, per run and per period of T = 4 s, the drag extrema beside the
 published +3.24 / -3.26 (Wan & Turek), raw and of the curve averaged over
 0.1 s (spikes of single steps do not count), the largest |c_l|, and the total
-variation of c_d over the period (how oscillatory the curve is). With
+variation of c_d over the period (how oscillatory the curve is); then, per
+period, c_d split by least squares into its parts against the cylinder's
+velocity and against its acceleration (where the added mass shows). With
 --doc writes DOC_DIR/NAME-drag.png and NAME-lift.png (NAME defaults to
 oscillating-cylinder). --series FILE writes time, c_d and c_l of the last
 run given, the series this script reads back (the committed
@@ -36,6 +38,7 @@ import os
 import sys
 
 import matplotlib
+import numpy
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -135,6 +138,30 @@ def per_period(t, c_d, c_l):
     return out
 
 
+def phase_parts(t, c_d):
+    """Per period, the least-squares fit c_d = -c_u cos(w t) + c_a sin(w t):
+    c_u the part against the cylinder's velocity U cos(w t), c_a the part
+    against its acceleration -A w^2 sin(w t) (the added mass and the
+    history force), and the RMS of what the fit leaves. The first 0.5 s
+    (the impulsive start) are left out."""
+    w = 2 * 3.141592653589793 * F
+    out = []
+    k = 0
+    while k * PERIOD < t[-1] - 1e-9:
+        lo = max(k * PERIOD, 0.5)
+        idx = [i for i, s in enumerate(t) if lo < s <= (k + 1) * PERIOD + 1e-9]
+        if len(idx) > 10:
+            ts = numpy.array([t[i] for i in idx])
+            basis = numpy.c_[-numpy.cos(w * ts), numpy.sin(w * ts)]
+            values = numpy.array([c_d[i] for i in idx])
+            fit = numpy.linalg.lstsq(basis, values, rcond=None)[0]
+            rest = values - basis @ fit
+            out.append(dict(period=k + 1, velocity=fit[0], acceleration=fit[1],
+                            rest=float(numpy.sqrt(numpy.mean(rest ** 2)))))
+        k += 1
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("runs", nargs="+", help="LABEL=PATH")
@@ -184,6 +211,15 @@ def main():
                   f"{p['smooth_max']:+.3f} ({100 * (p['smooth_max'] / PUBLISHED_MAX - 1):+.1f} %) / "
                   f"{p['smooth_min']:+.3f} ({100 * (p['smooth_min'] / PUBLISHED_MIN - 1):+.1f} %) | "
                   f"{p['lift']:.3f} | {p['tv']:.2f} | {ratio:.2f} |")
+
+    print()
+    print("| run | period | c_d against the velocity | against the acceleration "
+          "| RMS rest |")
+    print("|---|---|---|---|---|")
+    for label, _, t, c_d, _, _ in runs:
+        for p in phase_parts(t, c_d):
+            print(f"| {label} | {p['period']} | {p['velocity']:.3f} | "
+                  f"{p['acceleration']:.3f} | {p['rest']:.3f} |")
 
     failures = check_against_reference(runs, reference, args)
 

@@ -786,7 +786,36 @@ namespace particulate {
       record_imposed();
       r.flow->set_fictitious_boundary_values(r.interface->constraint_values(
                                                r.interface_bodies),
-                                             joint_dofs());
+                                             joint_dofs(),
+                                             step_start_constraint_values());
+    }
+
+
+
+    template <int dim>
+    std::vector<double>
+    ParticulateFlowSimulation<dim>::step_start_constraint_values()
+    {
+      Run                          &r       = *run_;
+      const std::vector<BodyMotion> current = body_motions();
+      bool                          any     = false;
+      for (unsigned int i = 0; i < r.ids.size(); ++i)
+        if (r.prescribed[i])
+          {
+            rigid::RigidBody &b = r.world->body(r.ids[i]);
+            b.linear_velocity   = r.states[i].solved_velocity;
+            b.angular_velocity  = r.states[i].solved_angular;
+            any                 = true;
+          }
+      std::vector<double> start;
+      if (!any)
+        return start;
+      const auto values = r.interface->constraint_values(r.interface_bodies);
+      restore_bodies(current);
+      start.reserve(values.size());
+      for (const auto &entry : values)
+        start.push_back(entry.second);
+      return start;
     }
 
 
@@ -815,9 +844,11 @@ namespace particulate {
       auto values = r.interface->constraint_values(r.interface_bodies);
       auto joints = joint_dofs();
       record_imposed();
+      auto start = step_start_constraint_values();
       restore_bodies(current);
       r.flow->set_fictitious_boundary_values(std::move(values),
-                                             std::move(joints));
+                                             std::move(joints),
+                                             std::move(start));
     }
 
 

@@ -210,15 +210,19 @@ namespace particulate {
           // and hanging nodes come first and keep their rows.
           if (homogeneous)
             body_constrained_dofs.clear();
-          for (const auto &[dof, value] : fictitious_boundary_values)
-            if (c.can_store_line(dof) && !c.is_constrained(dof))
-              {
-                c.add_line(dof);
-                if (!homogeneous)
-                  c.set_inhomogeneity(dof, value);
-                else
-                  body_constrained_dofs.push_back(dof);
-              }
+          for (std::size_t j = 0; j < fictitious_boundary_values.size(); ++j)
+            {
+              const auto dof = fictitious_boundary_values[j].first;
+              if (c.can_store_line(dof) && !c.is_constrained(dof))
+                {
+                  c.add_line(dof);
+                  if (!homogeneous)
+                    c.set_inhomogeneity(dof,
+                                        fictitious_boundary_value(j, time));
+                  else
+                    body_constrained_dofs.push_back(dof);
+                }
+            }
           if (homogeneous)
             std::sort(body_constrained_dofs.begin(),
                       body_constrained_dofs.end());
@@ -305,24 +309,60 @@ namespace particulate {
 
 
     template <int dim>
+    double
+    FlowDiscretisation<dim>::fictitious_boundary_value(const std::size_t j,
+                                                       const double time) const
+    {
+      const double end = fictitious_boundary_values[j].second;
+      // a stage's end time lies in (step_start, step_start + step_length];
+      // any other time (set-up, initial condition) takes the end values
+      const double tolerance = 1e-9 * step_length;
+      if (fictitious_boundary_start_values.empty() || step_length <= 0.
+          || time < step_start - tolerance
+          || time > step_start + step_length + tolerance)
+        return end;
+      const double fraction
+        = std::clamp((time - step_start) / step_length, 0., 1.);
+      const double start = fictitious_boundary_start_values[j];
+      return start + fraction * (end - start);
+    }
+
+
+
+    template <int dim>
+    void
+    FlowDiscretisation<dim>::begin_step(const double time, const double k)
+    {
+      step_start  = time;
+      step_length = k;
+    }
+
+
+
+    template <int dim>
     bool
     FlowDiscretisation<dim>::set_fictitious_boundary_values(
       std::vector<std::pair<types::global_dof_index, double>> values,
-      std::vector<types::global_dof_index>                    joint_dofs)
+      std::vector<types::global_dof_index>                    joint_dofs,
+      std::vector<double>                                     start_values)
     {
+      AssertThrow(start_values.empty() || start_values.size() == values.size(),
+                  ExcMessage("The fictitious-boundary start values must "
+                             "match the values one to one."));
       // L_p = B D^{-1} B^T depends on which velocity DoFs are constrained:
       // rebuild it when a body has moved over a node (the values alone
       // change every step and do not matter to it).
-      const bool same_nodes      = std::equal(values.begin(),
+      const bool same_nodes            = std::equal(values.begin(),
                                          values.end(),
                                          fictitious_boundary_values.begin(),
                                          fictitious_boundary_values.end(),
                                          [](const auto &a, const auto &b) {
                                            return a.first == b.first;
                                          });
-      const bool same_joints     = joint_dofs == joint_velocity_dofs;
-      fictitious_boundary_values = std::move(values);
-      joint_velocity_dofs        = std::move(joint_dofs);
+      const bool same_joints           = joint_dofs == joint_velocity_dofs;
+      fictitious_boundary_values       = std::move(values);
+      fictitious_boundary_start_values = std::move(start_values);
+      joint_velocity_dofs              = std::move(joint_dofs);
       // collective: every rank must rebuild together
       return Utilities::MPI::max(same_nodes && same_joints ? 0 : 1,
                                  communicator)

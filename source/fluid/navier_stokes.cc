@@ -61,10 +61,13 @@ namespace particulate {
     void
     NavierStokes<dim>::set_fictitious_boundary_values(
       std::vector<std::pair<types::global_dof_index, double>> values,
-      std::vector<types::global_dof_index>                    joint_dofs)
+      std::vector<types::global_dof_index>                    joint_dofs,
+      std::vector<double>                                     start_values)
     {
       if (discretisation.set_fictitious_boundary_values(std::move(values),
-                                                        std::move(joint_dofs)))
+                                                        std::move(joint_dofs),
+                                                        std::move(
+                                                          start_values)))
         linear_solver->pressure_operator_changed();
     }
 
@@ -285,6 +288,7 @@ namespace particulate {
                                const double                       k,
                                const core::TimeParameters::Scheme scheme)
     {
+      discretisation.begin_step(time, k);
       return time_integrator.advance(
         time,
         k,

@@ -323,6 +323,16 @@ namespace particulate {
       /** The imposed velocities are the bodies' current ones. */
       void
       record_imposed();
+      /** The rigid velocities of the marked nodes at the start of the
+       *  step, in the order of FictitiousBoundary::constraint_values(): a
+       *  prescribed body's from the velocity it was last solved with (its
+       *  own at t_n), so that the stages of the step take its nodes along
+       *  its motion; every other body's as imposed (its nodes hold the
+       *  imposed velocity from the first stage on: doc/developer/fbm.md,
+       *  "Constraint values through the stages"). Empty when no body is
+       *  prescribed. */
+      std::vector<double>
+      step_start_constraint_values();
       /** A row of every time series at time t, after a step of size @p k
        *  (with the last solve's counts). */
       void

@@ -91,7 +91,13 @@ namespace particulate {
       bool
       set_fictitious_boundary_values(
         std::vector<std::pair<dealii::types::global_dof_index, double>> values,
-        std::vector<dealii::types::global_dof_index> joint_dofs);
+        std::vector<dealii::types::global_dof_index> joint_dofs,
+        std::vector<double>                          start_values);
+
+      /** The time step from @p time over @p k that the next stages belong
+       *  to: the fictitious-boundary values are interpolated over it. */
+      void
+      begin_step(const double time, const double k);
 
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void
@@ -347,6 +353,9 @@ namespace particulate {
     private:
       void
       make_constraints(const double time);
+      /** The fictitious-boundary value of entry @p j at @p time. */
+      double
+      fictitious_boundary_value(const std::size_t j, const double time) const;
       void
       setup_matrices();
       /** The pressure mass matrix and the lumped velocity mass. */
@@ -394,6 +403,11 @@ namespace particulate {
       /// velocity values imposed inside fictitious-boundary bodies
       std::vector<std::pair<dealii::types::global_dof_index, double>>
         fictitious_boundary_values;
+      /// their values at the start of the step (empty: constant over it)
+      std::vector<double> fictitious_boundary_start_values;
+      /// the time step the stages belong to: start time and length
+      double step_start  = 0.;
+      double step_length = 0.;
       /// where the parts of an articulated body meet (sorted; see
       /// NavierStokes::set_fictitious_boundary_values())
       std::vector<dealii::types::global_dof_index> joint_velocity_dofs;

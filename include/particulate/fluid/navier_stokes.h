@@ -119,11 +119,22 @@ namespace particulate {
        * divergence-free velocity takes both in one cell, so the cells with
        * one of them lose their continuity equations (their pressures are
        * decoupled, like those of cells inside a body).
+       *
+       * @p start_values, where given, are the same DoFs' values at the start
+       * of the next time step (in the order of @p values): each stage of
+       * that step then imposes the values interpolated linearly to its end
+       * time, so that the nodes accelerate with the body through the stages
+       * as a moving wall's Dirichlet values do. Imposed whole from the first
+       * stage on, the acceleration of a multi-stage step would happen in its
+       * first stage, and the pressure at the step's end would hold none of
+       * the fluid's reaction to it (the added mass). Empty: @p values hold
+       * for the whole step.
        */
       void
       set_fictitious_boundary_values(
         std::vector<std::pair<dealii::types::global_dof_index, double>> values,
-        std::vector<dealii::types::global_dof_index> joint_dofs = {});
+        std::vector<dealii::types::global_dof_index> joint_dofs   = {},
+        std::vector<double>                          start_values = {});
 
       /** ALE: mesh velocity w in the velocity components (ghosted). */
       void
