@@ -26,7 +26,8 @@ velocity and against its acceleration (where the added mass shows). With
 --doc writes DOC_DIR/NAME-drag.png and NAME-lift.png (NAME defaults to
 oscillating-cylinder). --series FILE writes time, c_d and c_l of the last
 run given, the series this script reads back (the committed
-doc/validation/oscillating-cylinder-<run>.dat).
+doc/validation/oscillating-cylinder-<run>.dat); --until T uses every run up
+to time T only.
 
 The checks (exit status 1 if one fails): with --max-peak-error, every
 complete period of every run that is not body-fitted has the extrema of its
@@ -138,6 +139,12 @@ def per_period(t, c_d, c_l):
     return out
 
 
+def until(end, t, c_d, c_l):
+    """The series up to time `end`."""
+    n = sum(1 for s in t if s <= end + 1e-9)
+    return list(t[:n]), list(c_d[:n]), list(c_l[:n])
+
+
 def phase_parts(t, c_d):
     """Per period, the least-squares fit c_d = -c_u cos(w t) + c_a sin(w t):
     c_u the part against the cylinder's velocity U cos(w t), c_a the part
@@ -179,6 +186,8 @@ def main():
     parser.add_argument("--label", default=None,
                         help="the label of a single run given as a folder "
                         "(as the validation tests pass it)")
+    parser.add_argument("--until", type=float, default=None,
+                        help="use each run up to this time [s] only")
     parser.add_argument("--series", default=None,
                         help="write time, c_d, c_l of the last run to this file")
     args = parser.parse_args()
@@ -191,6 +200,9 @@ def main():
         label, path = (item.split("=", 1) if "=" in item
                        else (args.label or os.path.basename(item), item))
         runs.append((label, path) + coefficients(path))
+    if args.until is not None:
+        runs = [(label, path) + until(args.until, t, c_d, c_l) + (fitted,)
+                for label, path, t, c_d, c_l, fitted in runs]
     reference = {}
     for label, _, t, c_d, c_l, fitted in runs:
         if fitted and not reference:
