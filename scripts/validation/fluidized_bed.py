@@ -4,7 +4,8 @@ spheres in a vertical column, lifted by a uniform upward flow, against the
 Richardson-Zaki correlation.
 
     scripts/validation/fluidized_bed.py BED --bead BEAD [--held-bead HELD]
-        [--after T] [--doc DIR]
+        [--after T] [--doc DIR] [--check-bracket]
+    scripts/validation/fluidized_bed.py BEAD HELD BED [--after T] [--check-bracket]
     scripts/validation/fluidized_bed.py --redraw DIR
 
 BEAD is the output of the single bead settling in the closed column
@@ -37,6 +38,13 @@ BEAD is the output of the single bead settling in the closed column
   Table 6.7): the experiment's (u_0 = 0.12 m/s, u_t = 0.226 m/s), and with
   the run's u_0 and the terminal velocities measured here, each also with
   Richardson and Zaki's correction for the column's wall, u_t 10^(-d/D).
+
+The second form takes the three runs in the order the validation test
+makes them. --check-bracket exits with status 1 unless the bed's solid
+fraction over t > T lies between the Richardson-Zaki predictions, with the
+wall correction, of the settling and of the held bead (the report's
+result: the bed's alpha is bracketed by the two ways of measuring u_t on
+this mesh); it needs HELD.
 
 With --doc it writes fluidized-bed.dat (t, h_b, alpha), fluidized-bed-bead.dat
 (the bead's t, z, w), fluidized-bed-rz.dat (T and the predictions) and
@@ -172,7 +180,7 @@ def suspension_velocity(u_0, u_t, alpha):
     return (u_0 - u_t * porosity ** RZ_INDEX) / porosity
 
 
-def analyse(bed, bead, held, after, doc):
+def analyse(bed, bead, held, after, doc, check_bracket):
     u_t, reynolds, d, bead_table, window, spread = terminal_velocity(bead)
     print(f"single bead: d = {d:.4g} m, terminal velocity u_t = {u_t:.4g} m/s "
           f"(mean over t = {window[0]:.3g} .. {window[1]:.3g} s, range {spread[0]:.4g} .. "
@@ -224,6 +232,8 @@ def analyse(bed, bead, held, after, doc):
         print(f"  Richardson-Zaki's velocity of a suspension of that alpha, u_t = "
               f"{speed:.4g} ({label}): {suspension_velocity(inflow, speed, slab_alpha):.4g} m/s")
 
+    if check_bracket and not check_bracketed(a_mean, predictions):
+        sys.exit(1)
     if doc:
         write_table(os.path.join(doc, "fluidized-bed.dat"), ["time", "h_b", "alpha"], history)
         write_table(os.path.join(doc, "fluidized-bed-bead.dat"), ["time", "z", "w"], bead_table)
@@ -232,6 +242,23 @@ def analyse(bed, bead, held, after, doc):
                                  for label, _, _ in predictions],
                     np.array([[after] + [richardson_zaki(i, v) for _, i, v in predictions]]))
         draw(doc)
+
+
+def check_bracketed(alpha, predictions):
+    """Whether alpha lies between the wall-corrected Richardson-Zaki
+    predictions of the settling and the held bead; says which way it
+    fails."""
+    walls = {label: richardson_zaki(inflow, speed)
+             for label, inflow, speed in predictions if label.endswith(", wall")}
+    low, high = sorted(walls[name] for name in ("settling bead, wall", "held bead, wall"))
+    if low <= alpha <= high:
+        print(f"check: the bed's alpha {alpha:.4g} lies between the wall-corrected "
+              f"predictions {low:.4g} and {high:.4g}")
+        return True
+    print(f"FAILED: the bed's alpha {alpha:.4g} lies outside the wall-corrected "
+          f"Richardson-Zaki predictions of the settling and the held bead, "
+          f"{low:.4g} .. {high:.4g}")
+    return False
 
 
 def draw(doc):
@@ -272,19 +299,27 @@ def draw(doc):
 def main():
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("bed", nargs="?")
+    parser.add_argument("runs", nargs="*", metavar="RUN")
     parser.add_argument("--bead")
     parser.add_argument("--held-bead")
     parser.add_argument("--after", type=float)
     parser.add_argument("--doc")
+    parser.add_argument("--check-bracket", action="store_true")
     parser.add_argument("--redraw", metavar="DIR")
+    parser.add_argument("--label", help="the run's name (ignored; for the test driver)")
     args = parser.parse_args()
     if args.redraw:
         draw(args.redraw)
-    elif args.bed and args.bead:
-        analyse(args.bed, args.bead, args.held_bead, args.after, args.doc)
+        return
+    if len(args.runs) == 1 and args.bead:
+        bed, bead, held = args.runs[0], args.bead, args.held_bead
+    elif len(args.runs) == 3 and not (args.bead or args.held_bead):
+        bead, held, bed = args.runs
     else:
-        parser.error("give BED --bead BEAD, or --redraw DIR")
+        parser.error("give BED --bead BEAD, or BEAD HELD BED, or --redraw DIR")
+    if args.check_bracket and not held:
+        parser.error("--check-bracket needs the held bead's run")
+    analyse(bed, bead, held, args.after, args.doc, args.check_bracket)
 
 
 if __name__ == "__main__":
