@@ -72,8 +72,9 @@ def is_fbm_series(path):
 
 
 def span_of(folder):
-    """The cylinder's length along z of a 3D run (the force is per this
-    span), 1 for a 2D run (the force is per unit depth already)."""
+    """The cylinder's length along z of a 3D run (the 'Length' of its
+    shape: the force is per this span), 1 for a 2D run (the force is per
+    unit depth already)."""
     entries, section = {}, []
     with open(os.path.join(folder, "used_parameters.prm")) as f:
         for line in f:
@@ -85,9 +86,15 @@ def span_of(folder):
             elif words[:1] == ["set"] and "=" in line:
                 name, value = line.split("#")[0].split("=", 1)
                 entries[(" / ".join(section), name.split(None, 1)[1].strip())] = value.strip()
-    if entries.get(("Simulation", "Dimension")) == "3":
-        return float(entries[("Particles", "Length")])
-    return 1.0
+    if entries.get(("Simulation", "Dimension")) != "3":
+        return 1.0
+    lengths = [float(value) for (section, name), value in entries.items()
+               if section.startswith("Particles / Shape ") and name == "Length"
+               and value and float(value) > 0]
+    if len(lengths) != 1:
+        sys.exit(f"{folder}: expected one shape with a 'Length' (the "
+                 f"cylinder's span), found {len(lengths)}")
+    return lengths[0]
 
 
 def coefficients(path):
