@@ -121,6 +121,21 @@ namespace particulate {
           "hydrodynamic torque is taken about that point too. 'start': at "
           "X_n, so the fluid sees the particle half a step behind on average "
           "(first order in time).");
+        prm.declare_entry(
+          "Stage velocities",
+          defaults.interpolate_free_stage_velocities ? "interpolated" : "held",
+          Patterns::Selection("held|interpolated"),
+          "Experimental. What a free particle's covered nodes hold in the "
+          "stages of a time step (a prescribed particle's are always "
+          "interpolated). 'held' (default): the constraint velocity from "
+          "the first stage on, so the pressure at the end of the step, and "
+          "with it the force, holds none of the fluid's answer to the "
+          "particle's acceleration: it accelerates as if it had no added "
+          "mass. 'interpolated': linearly in time from its velocity at t_n "
+          "to the constraint velocity, so the force holds the added mass; "
+          "the explicit coupling is then stable only while the true added "
+          "mass stays below m + 2 C rho_f V ('Added mass coefficient'; "
+          "doc/developer/fbm.md, 'Constraint values through the stages').");
         prm.leave_subsection();
       }
     } // namespace
@@ -387,6 +402,8 @@ namespace particulate {
       extrapolate_constraint_velocity
         = prm.get("Constraint velocity") == "extrapolated";
       midpoint_interface_position = prm.get("Interface position") == "midpoint";
+      interpolate_free_stage_velocities
+        = prm.get("Stage velocities") == "interpolated";
       prm.leave_subsection();
       if (coupling == Coupling::iterated && !extrapolate_constraint_velocity)
         fail("Coupling",

@@ -784,27 +784,39 @@ namespace particulate {
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         r.states[i].load_centre = r.world->body(r.ids[i]).position;
       record_imposed();
-      r.flow->set_fictitious_boundary_values(r.interface->constraint_values(
-                                               r.interface_bodies),
-                                             joint_dofs(),
-                                             step_start_constraint_values());
+      r.flow->set_fictitious_boundary_values(
+        r.interface->constraint_values(r.interface_bodies),
+        joint_dofs(),
+        step_start_constraint_values(body_motions()));
     }
 
 
 
     template <int dim>
     std::vector<double>
-    ParticulateFlowSimulation<dim>::step_start_constraint_values()
+    ParticulateFlowSimulation<dim>::step_start_constraint_values(
+      const std::vector<BodyMotion> &step_start)
     {
       Run                          &r       = *run_;
       const std::vector<BodyMotion> current = body_motions();
       bool                          any     = false;
+      const bool                    ramp_free
+        = parameters.particles.interpolate_free_stage_velocities;
       for (unsigned int i = 0; i < r.ids.size(); ++i)
         if (r.prescribed[i])
           {
             rigid::RigidBody &b = r.world->body(r.ids[i]);
             b.linear_velocity   = r.states[i].solved_velocity;
             b.angular_velocity  = r.states[i].solved_angular;
+            any                 = true;
+          }
+        else if (ramp_free
+                 && parameters.particles.bodies[i].motion
+                      == ParticleMotion::free)
+          {
+            rigid::RigidBody &b = r.world->body(r.ids[i]);
+            b.linear_velocity   = step_start[i].velocity;
+            b.angular_velocity  = step_start[i].angular_velocity;
             any                 = true;
           }
       std::vector<double> start;
@@ -844,7 +856,7 @@ namespace particulate {
       auto values = r.interface->constraint_values(r.interface_bodies);
       auto joints = joint_dofs();
       record_imposed();
-      auto start = step_start_constraint_values();
+      auto start = step_start_constraint_values(current);
       restore_bodies(current);
       r.flow->set_fictitious_boundary_values(std::move(values),
                                              std::move(joints),

@@ -96,6 +96,11 @@ namespace particulate {
       /// 'Interface position = midpoint': the covered nodes of a step are
       /// those of the particle moved and turned to the middle of the step
       bool midpoint_interface_position = true;
+      /// 'Stage velocities = interpolated': a free body's covered nodes go
+      /// from its velocity at t_n to the predicted one through the stages
+      /// of a step, as a prescribed body's do, instead of holding the
+      /// predicted one from the first stage on
+      bool interpolate_free_stage_velocities = false;
       /// 'Force integral = stress and inertia': the loads include the
       /// momentum of the fluid in the cut cells (fluid_inertia_loads), so
       /// that body and fluid exchange momentum exactly

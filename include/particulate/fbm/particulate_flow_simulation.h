@@ -327,12 +327,14 @@ namespace particulate {
        *  step, in the order of FictitiousBoundary::constraint_values(): a
        *  prescribed body's from the velocity it was last solved with (its
        *  own at t_n), so that the stages of the step take its nodes along
-       *  its motion; every other body's as imposed (its nodes hold the
+       *  its motion; with 'Stage velocities = interpolated' a free body's
+       *  from its velocity in @p step_start (its own at t_n, before the
+       *  prediction); every other body's as imposed (its nodes hold the
        *  imposed velocity from the first stage on: doc/developer/fbm.md,
-       *  "Constraint values through the stages"). Empty when no body is
-       *  prescribed. */
+       *  "Constraint values through the stages"). Empty when no body's
+       *  nodes are interpolated. */
       std::vector<double>
-      step_start_constraint_values();
+      step_start_constraint_values(const std::vector<BodyMotion> &step_start);
       /** A row of every time series at time t, after a step of size @p k
        *  (with the last solve's counts). */
       void
