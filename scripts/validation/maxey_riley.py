@@ -49,9 +49,8 @@ def settling_velocity(rho_p, rho_f, mu, d, added_mass, history, end, dt=2e-4):
 
 def read_series(path):
     """time and settling velocity of a ten_cate.py --series file."""
-    rows = [line.split() for line in open(path)
-            if line.strip() and not line.startswith("#")]
-    return np.array([float(r[0]) for r in rows]), np.array([float(r[1]) for r in rows])
+    table = np.loadtxt(path, ndmin=2)
+    return table[:, 0], table[:, 1]
 
 
 def main():

@@ -44,6 +44,9 @@ import numpy
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from particulate_output import read_parameters  # noqa: E402
+
 A, F, D, RHO = 0.25, 0.25, 0.1, 1.0
 U = 2 * 3.141592653589793 * F * A
 PERIOD = 1 / F
@@ -75,21 +78,11 @@ def span_of(folder):
     """The cylinder's length along z of a 3D run (the 'Length' of its
     shape: the force is per this span), 1 for a 2D run (the force is per
     unit depth already)."""
-    entries, section = {}, []
-    with open(os.path.join(folder, "used_parameters.prm")) as f:
-        for line in f:
-            words = line.split("#")[0].split()
-            if words[:1] == ["subsection"]:
-                section.append(" ".join(words[1:]))
-            elif words[:1] == ["end"]:
-                section.pop()
-            elif words[:1] == ["set"] and "=" in line:
-                name, value = line.split("#")[0].split("=", 1)
-                entries[(" / ".join(section), name.split(None, 1)[1].strip())] = value.strip()
-    if entries.get(("Simulation", "Dimension")) != "3":
+    values = read_parameters(folder)
+    if values.get("Simulation/Dimension") != "3":
         return 1.0
-    lengths = [float(value) for (section, name), value in entries.items()
-               if section.startswith("Particles / Shape ") and name == "Length"
+    lengths = [float(value) for key, value in values.items()
+               if key.startswith("Particles/Shape ") and key.endswith("/Length")
                and value and float(value) > 0]
     if len(lengths) != 1:
         sys.exit(f"{folder}: expected one shape with a 'Length' (the "

@@ -814,10 +814,15 @@ namespace particulate {
                  && parameters.particles.bodies[i].motion
                       == ParticleMotion::free)
           {
+            // a body not predicted (marked where it is) starts where it
+            // ends: nothing to interpolate
             rigid::RigidBody &b = r.world->body(r.ids[i]);
-            b.linear_velocity   = step_start[i].velocity;
-            b.angular_velocity  = step_start[i].angular_velocity;
-            any                 = true;
+            if (b.linear_velocity == step_start[i].velocity
+                && b.angular_velocity == step_start[i].angular_velocity)
+              continue;
+            b.linear_velocity  = step_start[i].velocity;
+            b.angular_velocity = step_start[i].angular_velocity;
+            any                = true;
           }
       std::vector<double> start;
       if (!any)
