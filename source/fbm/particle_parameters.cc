@@ -127,14 +127,14 @@ namespace particulate {
           Patterns::Selection("held|interpolated"),
           "Experimental. What a free particle's covered nodes hold in the "
           "stages of a time step (a prescribed particle's are always "
-          "interpolated). 'held' (default): the constraint velocity from "
-          "the first stage on, so the pressure at the end of the step, and "
-          "with it the force, holds none of the fluid's answer to the "
-          "particle's acceleration: it accelerates as if it had no added "
-          "mass. 'interpolated': linearly in time from its velocity at t_n "
-          "to the constraint velocity, so the force holds the added mass; "
-          "the explicit coupling is then stable only while the true added "
-          "mass stays below m + 2 C rho_f V ('Added mass coefficient'; "
+          "interpolated). 'interpolated' (default): linearly in time from "
+          "its velocity at t_n to the constraint velocity, so the pressure "
+          "at the end of the step, and with it the force, holds the fluid's "
+          "answer to the particle's acceleration (its added mass); the "
+          "explicit coupling is then stable while that added mass stays "
+          "below m + 2 C rho_f V ('Added mass coefficient'). 'held': the "
+          "constraint velocity from the first stage on; the force holds "
+          "none of the added mass and the particle accelerates too fast ("
           "doc/developer/fbm.md, 'Constraint values through the stages').");
         prm.leave_subsection();
       }
@@ -216,12 +216,14 @@ namespace particulate {
                         core::number_text(defaults.added_mass_coefficient),
                         Patterns::Double(0.),
                         "C in the added mass m_a = C rho_f V that stabilises "
-                        "the explicit coupling of light particles: the "
-                        "particle is integrated with mass m + m_a under the "
-                        "force F + m_a a_old (and likewise for rotation), "
-                        "which equals m a = F at convergence but stays stable "
-                        "for density ratios near 1 at small time steps. 0 "
-                        "gives the plain explicit coupling.");
+                        "the explicit coupling: the particle is integrated "
+                        "with mass m + m_a under the force F + m_a a_old "
+                        "(and likewise for rotation), which equals m a = F "
+                        "at convergence. The force holds the fluid's added "
+                        "mass, which grows without bound as a particle "
+                        "nears a wall or another particle; the step stays "
+                        "stable while it is below m + 2 m_a. 0 gives the "
+                        "plain explicit coupling.");
       prm.declare_entry(
         "Coupling",
         to_string(defaults.coupling),

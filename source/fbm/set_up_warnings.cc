@@ -1,3 +1,4 @@
+#include <particulate/fbm/particle_parameters.h>
 #include <particulate/fbm/set_up_warnings.h>
 #include <particulate/geometry/mapped_surface.h>
 
@@ -89,7 +90,8 @@ namespace particulate {
                    "'Added mass coefficient' in subsection 'Particles' to "
                    "at least "
                 << (added_mass - density_ratios[lightest]) / 2.
-                << " (the default is 1).";
+                << " (the default is "
+                << ParticleParameters{}.added_mass_coefficient << ").";
         return message.str();
       }
 

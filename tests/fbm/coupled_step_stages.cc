@@ -87,7 +87,8 @@ main(int argc, char **argv)
                 "compute_loads: no load from a fluid at rest");
   staged.advance_bodies(k);
   const double rho_p     = p.bodies[0].density;
-  const double free_fall = (rho_p - rho_f) / (rho_p + rho_f) * 9.81 * k;
+  const double C         = p.added_mass_coefficient;
+  const double free_fall = (rho_p - rho_f) / (rho_p + C * rho_f) * 9.81 * k;
   checker.check_relative(-body().linear_velocity[1],
                          free_fall,
                          1e-14,

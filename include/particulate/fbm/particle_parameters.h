@@ -82,7 +82,7 @@ namespace particulate {
       /// world axes about which the particles may not rotate
       std::array<bool, 3> locked_rotation = {{false, false, false}};
       /// C in m_a = C rho_f V of the added-mass-corrected coupling
-      double   added_mass_coefficient = 1.;
+      double   added_mass_coefficient = 2.;
       Coupling coupling               = Coupling::explicit_step;
       /// an iterated step ends when the velocities the fluid was given
       /// differ from those the bodies reached by at most this fraction of
@@ -98,9 +98,9 @@ namespace particulate {
       bool midpoint_interface_position = true;
       /// 'Stage velocities = interpolated': a free body's covered nodes go
       /// from its velocity at t_n to the predicted one through the stages
-      /// of a step, as a prescribed body's do, instead of holding the
-      /// predicted one from the first stage on
-      bool interpolate_free_stage_velocities = false;
+      /// of a step, as a prescribed body's do, so that the force holds the
+      /// added mass; 'held' keeps the predicted one from the first stage on
+      bool interpolate_free_stage_velocities = true;
       /// 'Force integral = stress and inertia': the loads include the
       /// momentum of the fluid in the cut cells (fluid_inertia_loads), so
       /// that body and fluid exchange momentum exactly
