@@ -240,7 +240,12 @@ namespace particulate {
               << " m/s, a time step below size / speed = " << size / speed
               << " s keeps it within its size; the fictitious boundary "
                  "method needs a much smaller one, of the order of a cell "
-                 "size / speed. Reduce 'Time step' in subsection 'Time'.";
+                 "size / speed. Reduce 'Time step' in subsection 'Time'; "
+                 "if its speed grew from step to step (the coupling "
+                 "diverged, see particle_"
+              << i
+              << ".dat), raise 'Added mass coefficient' in subsection "
+                 "'Particles' instead.";
       stop(message);
     }
 
