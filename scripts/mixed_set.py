@@ -19,9 +19,12 @@ and used_parameters.prm (fluid density, gravity) and prints
   with the loads computed at its end), as a percentage of the net weight's
   impulse; and the share of the net weight that the drag carries at the
   end of the free fall;
-- the largest speed of a body at the end of the run;
+- the largest speed of a body at the end of the run, that body's speed at
+  40 % of the run (with the doubling time when it grew), and the last time
+  any other body moved faster than 1 mm/s;
 - the deepest overlap of two bodies (shapes inflated by the contact
-  distance) at the end of the run, and the deepest over the run.
+  distance) at the end of the run, and the deepest over the run with its
+  time.
 
 --series writes time, the total kinetic energy and the height of every
 body (a small whitespace table for scripts/validation/mixed_set.py). The
@@ -93,6 +96,21 @@ def main():
     flow = read_series(os.path.join(args.output, "flow.dat"))
     penetration = float(flow["max_penetration"][-1])
     deepest = float(np.max(flow["max_penetration"]))
+    deepest_at = float(flow["time"][int(np.argmax(flow["max_penetration"]))])
+
+    fastest = int(np.argmax(speeds))
+    history = np.linalg.norm(velocity[fastest], axis=1)
+    early = int(np.argmin(np.abs(t - 0.4 * t[-1])))
+    growth = ""
+    if 0. < history[early] < history[-1]:
+        growth = ", doubling every %.2f s" % (
+            (t[-1] - t[early]) * np.log(2.) / np.log(history[-1]
+                                                     / history[early]))
+    others = [b for b in range(len(bodies)) if b != fastest]
+    last_fast = max((float(t[np.nonzero(np.linalg.norm(velocity[b], axis=1)
+                                        > 1e-3)[0][-1]]), b)
+                    for b in others
+                    if np.any(np.linalg.norm(velocity[b], axis=1) > 1e-3))
 
     print("%s %d free bodies; free fall t = 0..%.4g s: momentum change %s "
           "N s against the impulse of net weight and fluid forces %s N s: "
@@ -103,9 +121,13 @@ def main():
              np.array2string(impulse, precision=5), balance,
              100. * drag_share))
     print("%s at t = %.4g s: largest speed %.3e m/s (body %s), deepest "
-          "overlap %.3e m (%.3e m over the run)"
-          % (args.label, t[-1], speeds.max(),
-             particles[int(np.argmax(speeds))]["id"], penetration, deepest))
+          "overlap %.3e m (%.3e m over the run, at t = %.4g s)"
+          % (args.label, t[-1], speeds.max(), particles[fastest]["id"],
+             penetration, deepest, deepest_at))
+    print("%s body %s at t = %.4g s: %.3e m/s%s; any other body faster than "
+          "1 mm/s last at t = %.4g s (body %s)"
+          % (args.label, particles[fastest]["id"], t[early], history[early],
+             growth, last_fast[0], particles[last_fast[1]]["id"]))
 
     failed = []
     if args.max_balance_error is not None and not (
