@@ -106,11 +106,13 @@ def main():
         growth = ", doubling every %.2f s" % (
             (t[-1] - t[early]) * np.log(2.) / np.log(history[-1]
                                                      / history[early]))
-    others = [b for b in range(len(bodies)) if b != fastest]
-    last_fast = max((float(t[np.nonzero(np.linalg.norm(velocity[b], axis=1)
-                                        > 1e-3)[0][-1]]), b)
-                    for b in others
-                    if np.any(np.linalg.norm(velocity[b], axis=1) > 1e-3))
+    # (time, body) of the last row at which a body other than the fastest
+    # moved faster than 1 mm/s
+    last_fast = (float("nan"), fastest)
+    for b in range(len(bodies)):
+        fast = np.nonzero(np.linalg.norm(velocity[b], axis=1) > 1e-3)[0]
+        if b != fastest and len(fast) and not t[fast[-1]] <= last_fast[0]:
+            last_fast = (float(t[fast[-1]]), b)
 
     print("%s %d free bodies; free fall t = 0..%.4g s: momentum change %s "
           "N s against the impulse of net weight and fluid forces %s N s: "
