@@ -1,4 +1,5 @@
 #include <particulate/core/checkpoint.h>
+#include <particulate/deformation/carried_zone_realignment.h>
 #include <particulate/deformation/distance_field.h>
 #include <particulate/deformation/laplace_smoothing.h>
 #include <particulate/deformation/mesh_quality.h>
@@ -147,6 +148,25 @@ namespace particulate {
                <= std::max(readaptation_aspect_ratio, fresh_max_aspect_ratio))
         return moved(report);
       // the carried mesh has run out of room: start afresh
+      if (following == DeformationParameters::Following::carry_neighbourhood
+          && !method)
+        {
+          // from the undeformed mesh, each body's zone carried back to
+          // where its vertices were wherever the mesh repeats itself there
+          // (carried_zone_realignment.h)
+          const auto zones = realigned_zones(mesh.get_vertices(),
+                                             undeformed,
+                                             distance,
+                                             carried_zone_width);
+          VertexHierarchy<dim>::write_positions(mesh, undeformed);
+          auto fresh = carry_neighbourhood(distance, [&](const Point<dim> &x) {
+            return residual_near(zones, x);
+          });
+          fresh_min_quality      = fresh.quality.min_scaled_jacobian;
+          fresh_max_aspect_ratio = fresh.quality.max_aspect_ratio;
+          fresh.readapted        = true;
+          return moved(fresh);
+        }
       VertexHierarchy<dim>::write_positions(mesh, before);
       auto fresh      = adapt(distance);
       fresh.readapted = true;
