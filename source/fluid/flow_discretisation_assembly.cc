@@ -629,6 +629,51 @@ namespace particulate {
 
 
     template <int dim>
+    dealii::TrilinosWrappers::MPI::Vector
+    FlowDiscretisation<dim>::free_pressure_mask() const
+    {
+      TrilinosWrappers::MPI::Vector free_pressure(owned_partitioning[1],
+                                                  communicator);
+      free_pressure = 1.;
+      for (const auto dof : decoupled_pressure_dofs)
+        free_pressure(dof - dofs_per_block[0]) = 0.;
+      free_pressure.compress(VectorOperation::insert);
+      return free_pressure;
+    }
+
+
+
+    template <int dim>
+    void
+    FlowDiscretisation<dim>::constrain_gradient()
+    {
+      if (!momentum_operator)
+        return;
+      // B^T of the outer operator: rows of constrained velocities and
+      // columns of decoupled pressures zero (diagonal scalings by 0/1
+      // masks)
+      TrilinosWrappers::MPI::Vector free_velocity(owned_partitioning[0],
+                                                  communicator);
+      free_velocity = 1.;
+      for (const auto dof : constrained_velocity_dofs)
+        free_velocity(dof) = 0.;
+      free_velocity.compress(VectorOperation::insert);
+      const TrilinosWrappers::MPI::Vector free_pressure = free_pressure_mask();
+      constrained_gradient.copy_from(gradient_matrix);
+      // deal.II 9.4 hands out the Epetra matrix as const only; scaling
+      // its values keeps its structure, which is all the wrapper keeps
+      // of it
+      auto &epetra = const_cast<Epetra_CrsMatrix &>(
+        constrained_gradient.trilinos_matrix());
+      AssertThrow(epetra.LeftScale(*free_velocity.trilinos_vector()(0)) == 0
+                    && epetra.RightScale(*free_pressure.trilinos_vector()(0))
+                         == 0,
+                  ExcMessage("Epetra could not scale B^T."));
+    }
+
+
+
+    template <int dim>
     void
     FlowDiscretisation<dim>::build_pressure_laplacian()
     {
@@ -649,33 +694,8 @@ namespace particulate {
                covered :
                mesh_fixed)
               .push_back(dof);
-
-          // B^T of the outer operator: rows of constrained velocities and
-          // columns of decoupled pressures zero (diagonal scalings by 0/1
-          // masks)
-          TrilinosWrappers::MPI::Vector free_velocity(owned_partitioning[0],
-                                                      communicator);
-          free_velocity = 1.;
-          for (const auto dof : constrained_velocity_dofs)
-            free_velocity(dof) = 0.;
-          free_velocity.compress(VectorOperation::insert);
-          TrilinosWrappers::MPI::Vector free_pressure(owned_partitioning[1],
-                                                      communicator);
-          free_pressure = 1.;
-          for (const auto dof : decoupled_pressure_dofs)
-            free_pressure(dof - dofs_per_block[0]) = 0.;
-          free_pressure.compress(VectorOperation::insert);
-          constrained_gradient.copy_from(gradient_matrix);
-          // deal.II 9.4 hands out the Epetra matrix as const only; scaling
-          // its values keeps its structure, which is all the wrapper keeps
-          // of it
-          auto &epetra = const_cast<Epetra_CrsMatrix &>(
-            constrained_gradient.trilinos_matrix());
-          AssertThrow(
-            epetra.LeftScale(*free_velocity.trilinos_vector()(0)) == 0
-              && epetra.RightScale(*free_pressure.trilinos_vector()(0)) == 0,
-            ExcMessage("Epetra could not scale B^T."));
-
+          const TrilinosWrappers::MPI::Vector free_pressure
+            = free_pressure_mask();
           flow_row = pressure_laplacian_update.update(pressure_laplacian,
                                                       gradient_matrix,
                                                       inverse_lumped_mass,
@@ -706,6 +726,10 @@ namespace particulate {
         }
     }
 
+    template void
+    FlowDiscretisation<2>::constrain_gradient();
+    template void
+    FlowDiscretisation<3>::constrain_gradient();
     template void
     FlowDiscretisation<2>::assemble(const Stage &,
                                     const AssemblyTarget,

@@ -517,18 +517,20 @@ namespace particulate {
         "Multigrid on a moving mesh",
         to_string(defaults.multigrid_on_moving_mesh),
         Patterns::Selection(core::selection_of(moving_mesh_names)),
-        "What the geometric multigrid velocity preconditioner does when the "
-        "mesh vertices move (ALE: r-adaptivity, 'Moving bodies' in "
-        "subsection 'Mesh deformation'). rebuild: its level operators, "
-        "smoothers and coarse solve are rebuilt for the new positions after "
-        "every motion (twice per fractional-step theta step, one per kind of "
-        "stage). keep: the V-cycle of the last geometry stays the "
-        "preconditioner (FGMRES always applies the current operator) until "
-        "a solve needs more than 1.5 times the median FGMRES iterations of "
-        "the last five solves with a fresh V-cycle plus 5, or does not "
-        "converge; then it is rebuilt. A fresh adaptation, "
-        "which interpolates the flow onto a new mesh, and a checkpoint "
-        "always rebuild.");
+        "What the preconditioners built from the mesh do when its vertices "
+        "move (ALE: r-adaptivity, 'Moving bodies' in subsection 'Mesh "
+        "deformation'): the geometric multigrid of the velocity block, and "
+        "the Schur approximation's pressure Laplacian L_p with its algebraic "
+        "multigrid and the ILU of the pressure mass matrix. rebuild: they "
+        "are built anew for the new positions after every motion. keep: "
+        "those of the last geometry stay the preconditioner (FGMRES always "
+        "applies the current operator) until a solve needs more than 1.5 "
+        "times the median FGMRES iterations of the last five solves with a "
+        "fresh velocity preconditioner plus 5, or does not converge; then "
+        "they are rebuilt together. Covered nodes that change, or pressures "
+        "that become decoupled, rebuild L_p; a fresh adaptation, which "
+        "interpolates the flow onto a new mesh, and a checkpoint rebuild "
+        "all.");
       prm.declare_entry("Chebyshev degree",
                         std::to_string(defaults.chebyshev_degree),
                         Patterns::Integer(1, 50),

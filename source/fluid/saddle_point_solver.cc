@@ -102,7 +102,9 @@ namespace particulate {
       laplace_amg.reset();
       laplace_near_null_space.clear();
       mass_ilu.reset();
-      schur_ingredients_are_current = false;
+      schur_state         = SchurState::missing;
+      mass_ilu_is_current = false;
+      gradient_is_current = false;
     }
 
 
@@ -156,11 +158,14 @@ namespace particulate {
     void
     SaddlePointSolver<dim>::geometry_changing()
     {
-      // M_p, B and the lumped velocity mass change: what was built from
-      // them goes before they do
-      mass_ilu.reset();
+      // B, M_p and the lumped velocity mass are assembled again in place
+      // (same matrices, new values): L_p, its V-cycle and M_p's ILU stay
+      // valid preconditioners, built on the mesh before the motion
       laplace_near_null_space.clear();
-      schur_ingredients_are_current = false;
+      if (schur_state == SchurState::current)
+        schur_state = SchurState::aged;
+      mass_ilu_is_current = false;
+      gradient_is_current = false;
     }
 
 
@@ -179,6 +184,7 @@ namespace particulate {
     SaddlePointSolver<dim>::mesh_replaced()
     {
       velocity_inverse->mesh_replaced();
+      schur_state = SchurState::missing;
     }
 
 
@@ -188,7 +194,7 @@ namespace particulate {
     SaddlePointSolver<dim>::reset()
     {
       velocity_inverse->reset();
-      schur_ingredients_are_current = false;
+      schur_state = SchurState::missing;
     }
 
 
@@ -204,13 +210,15 @@ namespace particulate {
         // destroyed: the old V-cycle goes before its matrix changes
         laplace_amg.reset();
         d.build_pressure_laplacian();
+        decoupled_in_schur = d.get_decoupled_pressure_dofs();
       }
       TimerOutput::Scope amg_scope(timer,
                                    "fluid: Schur approximation: AMG set-up");
-      if (!mass_ilu) // M_p changes with the mesh only
+      if (!mass_ilu_is_current) // M_p changes with the mesh only
         {
           mass_ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
           mass_ilu->initialize(d.get_pressure_mass());
+          mass_ilu_is_current = true;
         }
       // A new V-cycle for every new L_p. Re-using the old aggregates
       // (PreconditionAMG::reinit) saves little, since the smoothers and
@@ -232,16 +240,42 @@ namespace particulate {
           << (cells_are_blocks ? "aggregation by cells, constant mode" :
                                  "one near-null vector per pressure mode")
           << std::endl;
-      schur_ingredients_are_current = true;
+      schur_state = SchurState::current;
+    }
+
+
+
+    template <int dim>
+    bool
+    SaddlePointSolver<dim>::schur_ingredients_need_building(
+      const FlowDiscretisation<dim> &d,
+      const bool                     velocity_is_fresh) const
+    {
+      if (schur_state == SchurState::missing)
+        return true;
+      // a motion that decoupled other pressures changed L_p's structure
+      const bool structure_changed
+        = Utilities::MPI::logical_or(d.get_decoupled_pressure_dofs()
+                                       != decoupled_in_schur,
+                                     d.get_communicator());
+      if (structure_changed)
+        return true;
+      if (schur_state == SchurState::current)
+        return false;
+      // aged: renewed together with the velocity V-cycle
+      return velocity_is_fresh
+             || parameters.linear_solver.multigrid_on_moving_mesh
+                  == MultigridOnMovingMesh::rebuild;
     }
 
 
 
     /*
      * FGMRES with the block-triangular preconditioner. The velocity block
-     * inverse may be one kept from an earlier matrix: it then gets a
-     * limited number of iterations (twice what a fresh one needs, plus a
-     * margin); if FGMRES needs more, it is rebuilt and the solve repeated.
+     * inverse and the Schur ingredients may be kept from an earlier matrix
+     * or mesh: the solve then gets a limited number of iterations (twice
+     * what a fresh one needs, plus a margin); if FGMRES needs more, both
+     * are rebuilt and the solve repeated.
      */
     template <int dim>
     unsigned int
@@ -250,13 +284,71 @@ namespace particulate {
                                   FlowDiscretisation<dim> &discretisation,
                                   BlockVector             &newton_update)
     {
-      if (!schur_ingredients_are_current)
-        build_schur_ingredients(discretisation);
-      const auto                 &d = discretisation;
+      if (!gradient_is_current)
+        {
+          discretisation.constrain_gradient();
+          gradient_is_current = true;
+        }
       const VelocityLinearisation linearisation
-        = velocity_linearisation(d, stage);
+        = velocity_linearisation(discretisation, stage);
       bool fresh = velocity_inverse->prepare(linearisation);
+      if (schur_ingredients_need_building(discretisation, fresh))
+        build_schur_ingredients(discretisation);
+      const unsigned int max_iterations
+        = parameters.linear_solver.maximum_iterations;
+      while (true)
+        {
+          const bool         kept = !fresh || schur_state == SchurState::aged;
+          const unsigned int allowed
+            = kept ?
+                std::min(max_iterations,
+                         2 * velocity_inverse->reference_iterations() + 20) :
+                max_iterations;
+          const FgmresOutcome outcome = run_fgmres(stage,
+                                                   tolerance,
+                                                   allowed,
+                                                   discretisation,
+                                                   newton_update);
+          if (outcome.converged)
+            {
+              velocity_inverse->record_solve(outcome.iterations, fresh);
+              return outcome.iterations;
+            }
+          if (kept)
+            {
+              // the kept preconditioner no longer fits the matrix
+              if (!fresh)
+                velocity_inverse->rebuild(linearisation);
+              fresh = true;
+              if (schur_state == SchurState::aged)
+                build_schur_ingredients(discretisation);
+              continue;
+            }
+          std::ostringstream message;
+          message << "The linear solver (FGMRES) did not converge in "
+                  << outcome.iterations << " iterations (residual "
+                  << outcome.residual << ", target " << tolerance << ").";
+          if (!outcome.non_finite_cause.empty())
+            message << " " << outcome.non_finite_cause;
+          throw SolverFailure(
+            SolverFailure::Kind::linear,
+            message.str(),
+            "Reduce 'Time step' in subsection 'Time', or raise 'Maximum "
+            "iterations' in subsection 'Linear solver'.");
+        }
+    }
 
+
+
+    template <int dim>
+    typename SaddlePointSolver<dim>::FgmresOutcome
+    SaddlePointSolver<dim>::run_fgmres(const Stage             &stage,
+                                       const double             tolerance,
+                                       const unsigned int       allowed,
+                                       FlowDiscretisation<dim> &discretisation,
+                                       BlockVector             &newton_update)
+    {
+      const auto              &d = discretisation;
       TimerOutput::Scope       scope(timer, "fluid: linear solve");
       const bool               steady = stage.time_step == 0.;
       const SchurApproximation schur  = resolve_schur_approximation(
@@ -297,61 +389,39 @@ namespace particulate {
         d.get_owned_partitioning()[0],
         d.get_communicator(),
         timer);
-      const unsigned int max_iterations
-        = parameters.linear_solver.maximum_iterations;
-
-      while (true)
+      SolverControl             control(allowed, tolerance, false, false);
+      SolverFGMRES<BlockVector> solver(
+        control,
+        SolverFGMRES<BlockVector>::AdditionalData(
+          parameters.linear_solver.krylov_size));
+      newton_update = 0;
+      FgmresOutcome outcome;
+      try
         {
-          const unsigned int allowed
-            = fresh ?
-                max_iterations :
-                std::min(max_iterations,
-                         2 * velocity_inverse->reference_iterations() + 20);
-          SolverControl             control(allowed, tolerance, false, false);
-          SolverFGMRES<BlockVector> solver(
-            control,
-            SolverFGMRES<BlockVector>::AdditionalData(
-              parameters.linear_solver.krylov_size));
-          newton_update = 0;
-          try
-            {
-              solver.solve(system,
-                           newton_update,
-                           d.get_system_rhs(),
-                           preconditioner);
-            }
-          catch (const SolverControl::NoConvergence &e)
-            {
-              if (!fresh)
-                {
-                  // the kept inverse no longer fits the matrix
-                  velocity_inverse->rebuild(linearisation);
-                  fresh = true;
-                  continue;
-                }
-              std::ostringstream message;
-              message << "The linear solver (FGMRES) did not converge in "
-                      << e.last_step << " iterations (residual "
-                      << e.last_residual << ", target " << tolerance << ").";
-              if (!std::isfinite(e.last_residual))
-                message << " "
-                        << locate_non_finite(system,
-                                             d.get_system_rhs(),
-                                             *velocity_inverse,
-                                             *mass_ilu,
-                                             laplace_inverse);
-              throw SolverFailure(
-                SolverFailure::Kind::linear,
-                message.str(),
-                "Reduce 'Time step' in subsection 'Time', or raise 'Maximum "
-                "iterations' in subsection 'Linear solver'.");
-            }
-          d.distribute_update(newton_update);
-          pressure_poisson_solves += laplace_inverse.solves;
-          pressure_poisson_iterations += laplace_inverse.iterations;
-          velocity_inverse->record_solve(control.last_step(), fresh);
-          return control.last_step();
+          solver.solve(system,
+                       newton_update,
+                       d.get_system_rhs(),
+                       preconditioner);
         }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          outcome.converged  = false;
+          outcome.iterations = e.last_step;
+          outcome.residual   = e.last_residual;
+          if (!std::isfinite(e.last_residual))
+            outcome.non_finite_cause = locate_non_finite(system,
+                                                         d.get_system_rhs(),
+                                                         *velocity_inverse,
+                                                         *mass_ilu,
+                                                         laplace_inverse);
+          return outcome;
+        }
+      discretisation.distribute_update(newton_update);
+      pressure_poisson_solves += laplace_inverse.solves;
+      pressure_poisson_iterations += laplace_inverse.iterations;
+      outcome.iterations = control.last_step();
+      outcome.residual   = control.last_value();
+      return outcome;
     }
 
 

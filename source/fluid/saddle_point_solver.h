@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -65,10 +66,11 @@ namespace particulate {
       void
       pressure_operator_changed()
       {
-        schur_ingredients_are_current = false;
+        schur_state         = SchurState::missing;
+        gradient_is_current = false;
       }
 
-      /** Before the mesh moves: what M_p, B and the mesh determine goes. */
+      /** Before the mesh moves: B, M_p and the lumped mass will change. */
       void
       geometry_changing();
 
@@ -106,9 +108,48 @@ namespace particulate {
       memory_consumption() const;
 
     private:
+      /**
+       * Where L_p, its AMG and M_p's ILU stand: missing (none, or L_p's
+       * structure changed: rebuilt before the next solve), current (built
+       * on this mesh), or aged (built on the mesh before one or more ALE
+       * motions, which only changed values: kept like the velocity
+       * V-cycle, 'Multigrid on a moving mesh').
+       */
+      enum class SchurState
+      {
+        missing,
+        current,
+        aged
+      };
+
       /** L_p and its AMG, M_p and its ILU. */
       void
       build_schur_ingredients(FlowDiscretisation<dim> &discretisation);
+
+      /** Whether the Schur ingredients are built anew before a solve whose
+       *  velocity block inverse is @p velocity_is_fresh. Collective. */
+      bool
+      schur_ingredients_need_building(const FlowDiscretisation<dim> &d,
+                                      const bool velocity_is_fresh) const;
+
+      /** How one FGMRES solve ended. */
+      struct FgmresOutcome
+      {
+        bool         converged  = true;
+        unsigned int iterations = 0;
+        double       residual   = 0.;
+        /// which preconditioner part gave NaN/Inf, if the residual did
+        std::string non_finite_cause;
+      };
+
+      /** One FGMRES solve with the current preconditioners, stopped after
+       *  @p allowed iterations. */
+      FgmresOutcome
+      run_fgmres(const Stage             &stage,
+                 const double             tolerance,
+                 const unsigned int       allowed,
+                 FlowDiscretisation<dim> &discretisation,
+                 BlockVector             &update);
 
       const FluidParameters            &parameters;
       dealii::TimerOutput              &timer;
@@ -119,7 +160,13 @@ namespace particulate {
       /// the near-null space of L_p's AMG: it depends on the mesh only
       std::vector<double> laplace_near_null_space;
       std::unique_ptr<dealii::TrilinosWrappers::PreconditionILU> mass_ilu;
-      bool schur_ingredients_are_current = false;
+      SchurState schur_state = SchurState::missing;
+      /// M_p's ILU was built on the current mesh
+      bool mass_ilu_is_current = false;
+      /// the decoupled pressures L_p was built with
+      std::vector<dealii::types::global_dof_index> decoupled_in_schur;
+      /// the matrix-free operator's masked gradient fits mesh and constraints
+      bool gradient_is_current = false;
       /// inner L_p solves and their CG iterations, summed over the run
       unsigned long pressure_poisson_solves     = 0;
       unsigned long pressure_poisson_iterations = 0;

@@ -136,9 +136,10 @@ main(int argc, char **argv)
                                 case_file,
                                 overrides,
                                 "moving_mesh_parallel_" + tag);
-      // the geometric multigrid on the moving mesh, its V-cycle rebuilt
-      // after every motion or kept while FGMRES converges: a preconditioner
-      // only, so the same flow, on any number of ranks
+      // the geometric multigrid on the moving mesh, its V-cycles (the
+      // velocity's, and L_p's with the Schur approximation) rebuilt after
+      // every motion or kept while FGMRES converges: preconditioners only,
+      // so the same flow, on any number of ranks
       const std::string multigrid
         = "subsection Linear solver\n set Velocity preconditioner = "
           "geometric multigrid\n set Multigrid on a moving mesh = ";
@@ -185,12 +186,12 @@ main(int argc, char **argv)
                                  rebuilt.force[0][0],
                                  1e-5,
                                  method
-                                   + ": drag with the V-cycle kept across "
-                                     "mesh motions");
+                                   + ": drag with the preconditioners kept "
+                                     "across mesh motions");
           checker.check_relative(kept_parallel.force[0][0],
                                  kept.force[0][0],
                                  1e-6,
-                                 method + ": drag with the V-cycle kept, on "
+                                 method + ": drag with the preconditioners kept, on "
                                    + std::to_string(n_ranks) + " ranks");
           checker.check_relative(rebuilt.force[0][0],
                                  serial.force[0][0],

@@ -170,13 +170,29 @@ namespace particulate {
       normalise_pressure();
 
       /**
+       * The constraint-masked gradient of the matrix-free operator
+       * (get_constrained_gradient()) for the current mesh and constraints;
+       * nothing with the assembled operator. Part of the operator: after
+       * every mesh motion and change of the constraints.
+       */
+      void
+      constrain_gradient();
+
+      /**
        * L_p = B D^{-1} B^T of the current constraints (undetermined
-       * pressures decoupled, one pressure pinned in enclosed flow), and
-       * with the matrix-free operator the constraint-masked gradient. Who
+       * pressures decoupled, one pressure pinned in enclosed flow). Who
        * built a preconditioner from the old L_p drops it first.
        */
       void
       build_pressure_laplacian();
+
+      /** The pressure DoFs decoupled from the flow (undetermined next to
+       *  bodies, or pinned in enclosed pockets), sorted: they shape L_p. */
+      const std::vector<dealii::types::global_dof_index> &
+      get_decoupled_pressure_dofs() const
+      {
+        return decoupled_pressure_dofs;
+      }
 
       /** The Newton system's velocity block, assembled; nullptr with the
        *  matrix-free operator. */
@@ -351,6 +367,10 @@ namespace particulate {
       }
 
     private:
+      /** 1 at the owned pressures, 0 at the decoupled ones. */
+      dealii::TrilinosWrappers::MPI::Vector
+      free_pressure_mask() const;
+
       void
       make_constraints(const double time);
       /** The fictitious-boundary value of entry @p j at @p time. */

@@ -73,7 +73,8 @@ namespace particulate {
       cg_amg
     };
 
-    /** 'Multigrid on a moving mesh': the V-cycle after the mesh moved. */
+    /** 'Multigrid on a moving mesh': the mesh-built preconditioners after
+     *  the mesh moved. */
     enum class MultigridOnMovingMesh
     {
       rebuild,
