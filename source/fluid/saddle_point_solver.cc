@@ -210,7 +210,7 @@ namespace particulate {
         // destroyed: the old V-cycle goes before its matrix changes
         laplace_amg.reset();
         d.build_pressure_laplacian();
-        decoupled_in_schur = d.get_decoupled_pressure_dofs();
+        structure_in_schur = d.pressure_operator_structure();
       }
       TimerOutput::Scope amg_scope(timer,
                                    "fluid: Schur approximation: AMG set-up");
@@ -253,10 +253,12 @@ namespace particulate {
     {
       if (schur_state == SchurState::missing)
         return true;
-      // a motion that decoupled other pressures changed L_p's structure
+      // Other covered nodes or decoupled pressures: another structure. A
+      // step may mark its bodies more than once (where it starts, then at
+      // the predicted interface); what counts is the marking solved with.
       const bool structure_changed
-        = Utilities::MPI::logical_or(d.get_decoupled_pressure_dofs()
-                                       != decoupled_in_schur,
+        = Utilities::MPI::logical_or(!(d.pressure_operator_structure()
+                                       == structure_in_schur),
                                      d.get_communicator());
       if (structure_changed)
         return true;

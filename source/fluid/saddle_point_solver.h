@@ -62,11 +62,12 @@ namespace particulate {
       void
       set_masked_dofs(const std::vector<dealii::types::global_dof_index> &dofs);
 
-      /** The constrained nodes changed: L_p is rebuilt by the next solve. */
+      /** The constrained nodes changed: the masked gradient is formed
+       *  again, and L_p rebuilt if the solve finds other nodes covered
+       *  than those it was built with. */
       void
       pressure_operator_changed()
       {
-        schur_state         = SchurState::missing;
         gradient_is_current = false;
       }
 
@@ -109,11 +110,12 @@ namespace particulate {
 
     private:
       /**
-       * Where L_p, its AMG and M_p's ILU stand: missing (none, or L_p's
-       * structure changed: rebuilt before the next solve), current (built
-       * on this mesh), or aged (built on the mesh before one or more ALE
-       * motions, which only changed values: kept like the velocity
-       * V-cycle, 'Multigrid on a moving mesh').
+       * Where L_p, its AMG and M_p's ILU stand: missing (rebuilt before
+       * the next solve), current (built on this mesh), or aged (built on
+       * the mesh before one or more ALE motions, which only changed
+       * values: kept like the velocity V-cycle, 'Multigrid on a moving
+       * mesh'). Other covered nodes or decoupled pressures rebuild them
+       * in any state.
        */
       enum class SchurState
       {
@@ -163,8 +165,9 @@ namespace particulate {
       SchurState schur_state = SchurState::missing;
       /// M_p's ILU was built on the current mesh
       bool mass_ilu_is_current = false;
-      /// the decoupled pressures L_p was built with
-      std::vector<dealii::types::global_dof_index> decoupled_in_schur;
+      /// the covered nodes and decoupled pressures L_p was built with
+      typename FlowDiscretisation<dim>::PressureOperatorStructure
+        structure_in_schur;
       /// the matrix-free operator's masked gradient fits mesh and constraints
       bool gradient_is_current = false;
       /// inner L_p solves and their CG iterations, summed over the run

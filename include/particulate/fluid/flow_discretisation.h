@@ -186,12 +186,27 @@ namespace particulate {
       void
       build_pressure_laplacian();
 
-      /** The pressure DoFs decoupled from the flow (undetermined next to
-       *  bodies, or pinned in enclosed pockets), sorted: they shape L_p. */
-      const std::vector<dealii::types::global_dof_index> &
-      get_decoupled_pressure_dofs() const
+      /** What shapes L_p besides the mesh (this rank's part, sorted). */
+      struct PressureOperatorStructure
       {
-        return decoupled_pressure_dofs;
+        /// velocity DoFs the bodies constrain
+        std::vector<dealii::types::global_dof_index> covered;
+        /// pressures decoupled from the flow (undetermined next to bodies,
+        /// or pinned in enclosed pockets)
+        std::vector<dealii::types::global_dof_index> decoupled;
+
+        bool
+        operator==(const PressureOperatorStructure &other) const
+        {
+          return covered == other.covered && decoupled == other.decoupled;
+        }
+      };
+
+      /** The structure of the current constraints. */
+      PressureOperatorStructure
+      pressure_operator_structure() const
+      {
+        return {body_constrained_dofs, decoupled_pressure_dofs};
       }
 
       /** The Newton system's velocity block, assembled; nullptr with the
