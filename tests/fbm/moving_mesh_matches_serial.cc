@@ -191,7 +191,8 @@ main(int argc, char **argv)
           checker.check_relative(kept_parallel.force[0][0],
                                  kept.force[0][0],
                                  1e-6,
-                                 method + ": drag with the preconditioners kept, on "
+                                 method
+                                   + ": drag with the preconditioners kept, on "
                                    + std::to_string(n_ranks) + " ranks");
           checker.check_relative(rebuilt.force[0][0],
                                  serial.force[0][0],
