@@ -117,8 +117,10 @@ namespace particulate {
     MovingMesh<dim>::follow(
       const DistanceField<dim> &distance,
       const std::function<Tensor<1, dim>(const Point<dim> &)>
-        &body_displacement)
+                               &body_displacement,
+      const DistanceField<dim> *previous)
     {
+      fresh_start.clear();
       const std::vector<Point<dim>> before = mesh.get_vertices();
       const auto                    moved  = [&](DeformationReport report) {
         for (unsigned int v = 0; v < before.size(); ++v)
@@ -153,18 +155,27 @@ namespace particulate {
         {
           // from the undeformed mesh, each body's zone carried back to
           // where its vertices were wherever the mesh repeats itself there
-          // (carried_zone_realignment.h)
-          const auto zones = realigned_zones(mesh.get_vertices(),
+          // (carried_zone_realignment.h): where the step starts when that
+          // is known, then carried over the step
+          if (previous)
+            VertexHierarchy<dim>::write_positions(mesh, before);
+          const DistanceField<dim> &at    = previous ? *previous : distance;
+          const auto                zones = realigned_zones(mesh.get_vertices(),
                                              undeformed,
-                                             distance,
+                                             at,
                                              carried_zone_width);
           VertexHierarchy<dim>::write_positions(mesh, undeformed);
-          auto fresh = carry_neighbourhood(distance, [&](const Point<dim> &x) {
+          auto fresh        = carry_neighbourhood(at, [&](const Point<dim> &x) {
             return residual_near(zones, x);
           });
-          fresh_min_quality      = fresh.quality.min_scaled_jacobian;
+          fresh_min_quality = fresh.quality.min_scaled_jacobian;
           fresh_max_aspect_ratio = fresh.quality.max_aspect_ratio;
-          fresh.readapted        = true;
+          if (previous)
+            {
+              fresh_start = mesh.get_vertices();
+              fresh       = carry_neighbourhood(distance, body_displacement);
+            }
+          fresh.readapted = true;
           return moved(fresh);
         }
       VertexHierarchy<dim>::write_positions(mesh, before);
@@ -230,6 +241,23 @@ namespace particulate {
           const auto twin = mesh.create_cell_iterator(cell->id());
           for (const auto v : cell->vertex_indices())
             cell->vertex(v) = twin->vertex(v);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    MovingMesh<dim>::copy_vertices_to(
+      Triangulation<dim>            &tria,
+      const std::vector<Point<dim>> &positions) const
+    {
+      AssertDimension(positions.size(), mesh.n_vertices());
+      for (const auto &cell : tria.cell_iterators())
+        {
+          const auto twin = mesh.create_cell_iterator(cell->id());
+          for (const auto v : cell->vertex_indices())
+            cell->vertex(v) = positions[twin->vertex_index(v)];
         }
     }
 

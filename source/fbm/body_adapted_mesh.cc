@@ -134,18 +134,32 @@ namespace particulate {
                                  const double                       time_step)
     {
       AssertDimension(now.size(), poses.size());
-      const auto report
-        = moving_mesh.follow(distance_field(now),
-                             [&](const dealii::Point<dim> &x) {
-                               return carried_displacement(x, now);
-                             });
+      const auto before = distance_field(poses);
+      const auto report = moving_mesh.follow(
+        distance_field(now),
+        [&](const dealii::Point<dim> &x) {
+          return carried_displacement(x, now);
+        },
+        &before);
       poses                    = now;
       const auto move_vertices = [&]() { moving_mesh.copy_vertices_to(tria); };
       // A mesh carried with the bodies moves little per step, and the ALE
       // term accounts for it; a fresh adaptation among carried meshes is a
       // jump that would show as a spike of the mesh velocity: interpolate.
+      // A fresh start where the step starts is followed by the step's
+      // carry, with its mesh velocity.
+      const auto &fresh_start = moving_mesh.fresh_start_vertices();
       if (moving_mesh.carries_mesh() && report.readapted)
-        flow.transfer_to_moved_mesh(move_vertices);
+        {
+          if (fresh_start.empty())
+            flow.transfer_to_moved_mesh(move_vertices);
+          else
+            {
+              flow.transfer_to_moved_mesh(
+                [&]() { moving_mesh.copy_vertices_to(tria, fresh_start); });
+              flow.move_mesh(move_vertices, time_step);
+            }
+        }
       else
         flow.move_mesh(move_vertices, time_step);
       return report;

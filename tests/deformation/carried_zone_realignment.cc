@@ -7,7 +7,9 @@
 // steps start afresh. Checked at every step:
 // - the vertices inside the disk are those of the start, at the same
 //   places relative to its centre (to 1e-9 h), so the fictitious boundary
-//   sees the same body all along;
+//   sees the same body all along; so are those of a fresh start made where
+//   the step starts (follow() told where the disk was), which is then
+//   carried over the step;
 // - no cell falls below the quality bound.
 // And a zone that turned with its body (every vertex moved by its own
 // displacement) is not realigned: realigned_zones() leaves the fresh start
@@ -83,49 +85,81 @@ main(int argc, char **argv)
   p.readaptation_aspect_ratio = 1.001;
   MovingMesh<2> moving(mesh, p);
 
-  Point<2> centre(0.5 + 0.3 * h, 1.5 + 0.2 * h);
-  moving.adapt(disk_at(centre));
-  const auto start = inside_relative(moving.hierarchy().get_vertices(), centre);
-  const auto undeformed     = moving.hierarchy().get_vertices();
-  const double step         = 0.37 * h;
-  unsigned int fresh_starts = 0, changed_sets = 0, plain_changes = 0;
-  double       worst_quality = 1., largest_offset = 0.;
-  for (unsigned int n = 1; n <= 24; ++n)
-    {
-      centre[1] -= step;
-      const auto report = moving.follow(disk_at(centre), [&](const Point<2> &) {
-        return Tensor<1, 2>({0., -step});
-      });
-      fresh_starts += report.readapted;
-      worst_quality
-        = std::min(worst_quality, report.quality.min_scaled_jacobian);
-      const auto now
-        = inside_relative(moving.hierarchy().get_vertices(), centre);
-      if (now.size() != start.size())
-        ++changed_sets;
-      else
-        for (unsigned int i = 0; i < now.size(); ++i)
-          largest_offset
-            = std::max(largest_offset, (now[i] - start[i]).norm() / h);
-      plain_changes
-        += inside_relative(undeformed, centre).size() != start.size();
-    }
-  std::cout << "fresh starts in " << fresh_starts << " of 24 steps; "
-            << start.size() << " vertices inside the disk; the set changed in "
-            << changed_sets << " steps, largest offset " << largest_offset
-            << " h; from the undeformed mesh the count would change in "
-            << plain_changes << " steps; worst scaled Jacobian "
-            << worst_quality << "\n";
-  CHECK_MSG(fresh_starts >= 12, "most steps start afresh");
-  CHECK_MSG(plain_changes > 0,
-            "the path puts the disk elsewhere among the undeformed vertices");
-  CHECK_MSG(changed_sets == 0 && largest_offset < 1e-9,
-            "the disk keeps its vertices through every fresh start");
-  CHECK_MSG(worst_quality >= p.min_quality - 1e-12,
-            "no cell below the quality bound");
+  Point<2>     centre(0.5 + 0.3 * h, 1.5 + 0.2 * h);
+  const double step = 0.37 * h;
+  // from_step_start: follow() also gets where the disk was before the step
+  // and starts afresh there, then carries the fresh mesh over the step
+  const auto follow_the_disk = [&](const bool from_step_start) {
+    MovingMesh<2> moving(mesh, p);
+    Point<2>      at = centre;
+    moving.adapt(disk_at(at));
+    const auto   start = inside_relative(moving.hierarchy().get_vertices(), at);
+    const auto   undeformed   = moving.hierarchy().get_vertices();
+    unsigned int fresh_starts = 0, changed_sets = 0, plain_changes = 0;
+    unsigned int fresh_at_step_start = 0;
+    double       worst_quality = 1., largest_offset = 0.;
+    const auto   offset_from_start
+      = [&](const std::vector<Point<2>> &x, const Point<2> &c) {
+          const auto now = inside_relative(x, c);
+          if (now.size() != start.size())
+            {
+              ++changed_sets;
+              return;
+            }
+          for (unsigned int i = 0; i < now.size(); ++i)
+            largest_offset
+              = std::max(largest_offset, (now[i] - start[i]).norm() / h);
+        };
+    for (unsigned int n = 1; n <= 24; ++n)
+      {
+        const Point<2> before = at;
+        at[1] -= step;
+        const auto was    = disk_at(before);
+        const auto report = moving.follow(
+          disk_at(at),
+          [&](const Point<2> &) {
+            return Tensor<1, 2>({0., -step});
+          },
+          from_step_start ? &was : nullptr);
+        fresh_starts += report.readapted;
+        if (!moving.fresh_start_vertices().empty())
+          {
+            ++fresh_at_step_start;
+            offset_from_start(moving.fresh_start_vertices(), before);
+          }
+        worst_quality
+          = std::min(worst_quality, report.quality.min_scaled_jacobian);
+        offset_from_start(moving.hierarchy().get_vertices(), at);
+        plain_changes += inside_relative(undeformed, at).size() != start.size();
+      }
+    std::cout << (from_step_start ? "from the step's start: " : "")
+              << "fresh starts in " << fresh_starts << " of 24 steps ("
+              << fresh_at_step_start << " where the step starts); "
+              << start.size()
+              << " vertices inside the disk; the set changed in "
+              << changed_sets << " steps, largest offset " << largest_offset
+              << " h; from the undeformed mesh the count would change in "
+              << plain_changes << " steps; worst scaled Jacobian "
+              << worst_quality << "\n";
+    CHECK_MSG(fresh_starts >= 12, "most steps start afresh");
+    CHECK_MSG(fresh_at_step_start == (from_step_start ? fresh_starts : 0),
+              "each fresh start is made where the step starts if, and only "
+              "if, follow() is told where that is");
+    CHECK_MSG(plain_changes > 0,
+              "the path puts the disk elsewhere among the undeformed "
+              "vertices");
+    CHECK_MSG(changed_sets == 0 && largest_offset < 1e-9,
+              "the disk keeps its vertices through every fresh start");
+    CHECK_MSG(worst_quality >= p.min_quality - 1e-12,
+              "no cell below the quality bound");
+  };
+  follow_the_disk(false);
+  follow_the_disk(true);
+  centre[1] -= 24 * step;
 
   // the mesh turned by 0.2 rad about the disk's centre
-  std::vector<Point<2>> turned = undeformed;
+  std::vector<Point<2>> turned
+    = MovingMesh<2>(mesh, p).hierarchy().get_vertices();
   for (auto &x : turned)
     {
       const Tensor<1, 2> r = x - centre;
@@ -133,7 +167,11 @@ main(int argc, char **argv)
           + Tensor<1, 2>({std::cos(0.2) * r[0] - std::sin(0.2) * r[1],
                           std::sin(0.2) * r[0] + std::cos(0.2) * r[1]});
     }
-  CHECK_MSG(realigned_zones(turned, undeformed, disk_at(centre), 0.05).empty(),
+  CHECK_MSG(realigned_zones(turned,
+                            MovingMesh<2>(mesh, p).hierarchy().get_vertices(),
+                            disk_at(centre),
+                            0.05)
+              .empty(),
             "a zone that turned with its body is not realigned");
   return test::finish("deformation_carried_zone_realignment");
 }

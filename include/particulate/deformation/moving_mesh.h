@@ -70,12 +70,28 @@ namespace particulate {
        * `Re-adaptation aspect ratio` (and than the last fresh adaptation's
        * worst cell), or a surface vertex could not follow. Throws
        * DeformationError (mesh unchanged) when a fresh adaptation is refused.
+       *
+       * With `carry neighbourhood`, no method and @p previous (the bodies
+       * where the step starts, where the mesh was carried to before), a
+       * fresh start is made there and then carried over the step like any
+       * other: fresh_start_vertices() holds the fresh mesh, onto which the
+       * flow is carried before the step's ALE motion, so that the covered
+       * nodes move with their body in this step too.
        */
       DeformationReport
       follow(
         const DistanceField<dim> &distance,
         const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
-          &body_displacement);
+                                 &body_displacement,
+        const DistanceField<dim> *previous = nullptr);
+
+      /** The fresh start of the last follow() where the bodies were before
+       *  the step (see follow()); empty when there was none. */
+      const std::vector<dealii::Point<dim>> &
+      fresh_start_vertices() const
+      {
+        return fresh_start;
+      }
 
       /**
        * Give every cell of @p tria (a partition of the same mesh, e.g. a
@@ -84,6 +100,12 @@ namespace particulate {
        */
       void
       copy_vertices_to(dealii::Triangulation<dim> &tria) const;
+
+      /** The same with the vertices at @p positions (indexed like the
+       *  hierarchy's), e.g. fresh_start_vertices(). */
+      void
+      copy_vertices_to(dealii::Triangulation<dim>            &tria,
+                       const std::vector<dealii::Point<dim>> &positions) const;
 
       /** The hierarchy with its current vertex positions. */
       const dealii::Triangulation<dim> &
@@ -151,6 +173,8 @@ namespace particulate {
       std::vector<bool> on_surface;
       double            fresh_min_quality      = 1.;
       double            fresh_max_aspect_ratio = 1.;
+      /// see fresh_start_vertices()
+      std::vector<dealii::Point<dim>> fresh_start;
     };
   } // namespace deformation
 } // namespace particulate
