@@ -264,10 +264,16 @@ namespace particulate {
         return true;
       if (schur_state == SchurState::current)
         return false;
-      // aged: renewed together with the velocity V-cycle
+      // Aged: renewed together with the velocity V-cycle. Kept only with
+      // the matrix-free operator: with the assembled one a kept L_p let
+      // Newton diverge on a Laplace-alpha mesh pressed between a disk and
+      // a wall (fbm_restart_matches_uninterrupted, '_carried'), so it is
+      // rebuilt after every motion there.
       return velocity_is_fresh
              || parameters.linear_solver.multigrid_on_moving_mesh
-                  == MultigridOnMovingMesh::rebuild;
+                  == MultigridOnMovingMesh::rebuild
+             || parameters.linear_solver.velocity_operator
+                  == VelocityOperator::assembled;
     }
 
 
