@@ -2,12 +2,14 @@
 """The ten Cate report (doc/validation/ten-cate.md) from its committed series.
 
     scripts/validation/ten_cate_report.py [--series doc/validation/ten-cate.dat]
-        [--figure doc/validation/ten-cate.png] [--min-gap 2]
+        [--figure doc/validation/ten-cate.png] [--min-gap 1]
         [--collect BUILD/tests/validation [--commit HASH]]
 
 reads SERIES (one row per step of E1-E4: case, time [s], settling velocity
 [m/s], gap h/d_p), prints the report's table of u_max against the experiment
-(taken where the gap is at least --min-gap, as the tests do) and draws
+(taken where the gap is at least --min-gap, as the tests do), u_max/u_inf
+against the experiment's (thesis Table 6.2) and the time the gap reaches
+one diameter, and draws
 FIGURE: the settling velocity against time and against the gap, with the
 experiment's u_max.
 
@@ -30,9 +32,13 @@ import numpy as np  # noqa: E402
 # case: Re, experiment u_max [m/s] (ten Cate et al. 2002, Table II)
 EXPERIMENT = {"e1": (1.5, 0.035986), "e2": (4.1, 0.05718),
               "e3": (11.6, 0.087269), "e4": (31.9, 0.12224)}
+# case: u_inf [m/s], the settling velocity in an unbounded fluid, and the
+# experiment's u_max / u_inf (thesis Tables 6.1 and 6.2)
+UNBOUNDED = {"e1": (0.038, 0.947), "e2": (0.06, 0.953),
+             "e3": (0.091, 0.959), "e4": (0.128, 0.955)}
 # the End time each validation test runs its case to
 # (tests/validation/CMakeLists.txt)
-END_TIME = {"e1": "2.5", "e2": "2.0", "e3": "1.4", "e4": "0.9"}
+END_TIME = {"e1": "3.5", "e2": "2.1", "e3": "1.4", "e4": "1.1"}
 
 
 def collect(folder, series, commit):
@@ -90,7 +96,7 @@ def main():
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--series", default="doc/validation/ten-cate.dat")
     parser.add_argument("--figure", default="doc/validation/ten-cate.png")
-    parser.add_argument("--min-gap", type=float, default=2.)
+    parser.add_argument("--min-gap", type=float, default=1.)
     parser.add_argument("--collect", metavar="FOLDER", default=None,
                         help="write SERIES from FOLDER/ten-cate-<case>-series.dat "
                         "first")
@@ -104,8 +110,9 @@ def main():
 
     fig, (ax_t, ax_h) = plt.subplots(1, 2, figsize=(11, 4))
     print("| case | Re | u_max [m/s] | at t [s] | gap h/d_p there | "
-          "experiment [m/s] | error |")
-    print("|---|---|---|---|---|---|---|")
+          "experiment [m/s] | error | u_max/u_inf (experiment) | "
+          "h/d_p = 1 at t [s] |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for case, (re, u_exp) in EXPERIMENT.items():
         if case not in series:
             continue
@@ -113,8 +120,12 @@ def main():
         window = np.nonzero(gap >= args.min_gap)[0]
         i = int(window[np.argmax(w[window])])
         error = 100 * (w[i] - u_exp) / u_exp
+        u_inf, ratio_exp = UNBOUNDED[case]
+        below = np.nonzero(gap <= 1.)[0]
+        reached = f"{t[below[0]]:.3f}" if below.size else "not reached"
         print(f"| {case.upper()} | {re} | {w[i]:.5f} | {t[i]:.3f} | "
-              f"{gap[i]:.2f} | {u_exp} | {error:+.2f} % |")
+              f"{gap[i]:.2f} | {u_exp} | {error:+.2f} % | "
+              f"{w[i] / u_inf:.3f} ({ratio_exp}) | {reached} |")
         line, = ax_t.plot(t, w, label=f"{case.upper()}, Re = {re}")
         ax_h.plot(gap, w, color=line.get_color())
         for ax in (ax_t, ax_h):
@@ -127,7 +138,7 @@ def main():
         ax.set_ylabel("settling velocity [m/s]")
         ax.grid(alpha=0.3)
     fig.suptitle("ten Cate E1-E4 as shipped (dotted: the experiment's u_max; "
-                 "dashed: h/d_p = 2)", fontsize=10)
+                 f"dashed: h/d_p = {args.min_gap:g})", fontsize=10)
     ax_t.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(args.figure, dpi=110)
