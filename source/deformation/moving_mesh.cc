@@ -236,12 +236,7 @@ namespace particulate {
     void
     MovingMesh<dim>::copy_vertices_to(Triangulation<dim> &tria) const
     {
-      for (const auto &cell : tria.cell_iterators())
-        {
-          const auto twin = mesh.create_cell_iterator(cell->id());
-          for (const auto v : cell->vertex_indices())
-            cell->vertex(v) = twin->vertex(v);
-        }
+      copy_vertices_to(tria, mesh.get_vertices());
     }
 
 
