@@ -15,7 +15,8 @@ over the part of each run where the gap h/d_p is at least G (the approach
 to the floor left out). With --max-error it exits 1 unless every run has
 passed its maximum in that part (the velocity falls after it) within
 PERCENT of the experiment. --series writes the first run's time, settling
-velocity and gap, a few kB, for the report (scripts/validation/
+velocity, gap and the kinetic energies of particle and fluid, a few kB,
+for the report (scripts/validation/
 ten_cate_report.py).
 """
 import argparse
@@ -68,8 +69,8 @@ def main():
     parser.add_argument("--min-gap", type=float, default=0.,
                         help="take u_max where the gap h/d_p >= this")
     parser.add_argument("--series", default=None,
-                        help="write time, settling velocity and gap of the "
-                        "first run to this file")
+                        help="write time, settling velocity, gap and the "
+                        "kinetic energies of the first run to this file")
     args = parser.parse_args()
     args.doc = args.doc or args.folders[0]
     os.makedirs(args.doc, exist_ok=True)
@@ -81,7 +82,7 @@ def main():
         case = identify(folder)
         u_exp = EXPERIMENT[case][2]
         names, p = read_series(os.path.join(folder, "particle_0.dat"))
-        _, flow = read_series(os.path.join(folder, "flow.dat"))
+        flow_names, flow = read_series(os.path.join(folder, "flow.dat"))
         t = p[:, names.index("time")]
         w = -p[:, names.index("w")]
         z = p[:, names.index("z")]
@@ -103,10 +104,16 @@ def main():
                                 f"{100 * error:+.2f} % beyond "
                                 f"{args.max_error} %")
         if args.series and k == 0:
-            np.savetxt(args.series, np.column_stack((t, w, gap)),
+            # the kinetic energies of the particle and of the fluid (the
+            # whole box's, the images of a symmetric domain included)
+            energies = [np.interp(t, flow[:, 0], flow[:, flow_names.index(n)])
+                        for n in ("particle_kinetic_energy",
+                                  "fluid_kinetic_energy")]
+            np.savetxt(args.series, np.column_stack((t, w, gap, *energies)),
                        fmt="%.6g",
                        header=f"ten Cate {case}, {label}: time [s], settling "
-                       "velocity [m/s], gap h/d_p")
+                       "velocity [m/s], gap h/d_p, kinetic energy of the "
+                       "particle and of the fluid [J]")
         print(f"{case} {label}: u_max = {w[i]:.5f} m/s at t = {t[i]:.3f} s, "
               f"experiment {u_exp:.5f} m/s, error {100 * error:+.2f} % "
               f"(run to t = {t[-1]:.3f} s)")

@@ -6,17 +6,18 @@
         [--collect BUILD/tests/validation [--commit HASH]]
 
 reads SERIES (one row per step of E1-E4: case, time [s], settling velocity
-[m/s], gap h/d_p), prints the report's table of u_max against the experiment
+[m/s], gap h/d_p, kinetic energy of the particle and of the fluid [J]), prints the report's table of u_max against the experiment
 (taken where the gap is at least --min-gap, as the tests do), u_max/u_inf
 against the experiment's (thesis Table 6.2) and the time the gap reaches
 one diameter, and draws
 FIGURE: the settling velocity against time and against the gap, with the
-experiment's u_max.
+experiment's u_max, and the kinetic energies against time (thesis Figs 6.6
+and 6.7).
 
 --collect first writes SERIES from the files that `ctest -R
 validation_ten_cate` leaves in the given folder,
-ten-cate-<case>-series.dat (time, settling velocity, gap; written by
-ten_cate.py --series), with a header naming them and the commit (--commit,
+ten-cate-<case>-series.dat (time, settling velocity, gap, kinetic energies;
+written by ten_cate.py --series), with a header naming them and the commit (--commit,
 default: the current HEAD) the runs were made on.
 """
 import argparse
@@ -72,21 +73,24 @@ def collect(folder, series, commit):
                 "scripts/validation/ten_cate.py --series wrote it:\n")
         f.write("\n".join(header) + "\n")
         f.write("# columns: case (e1-e4); time [s]; settling velocity -w [m/s]; "
-                "gap h/d_p = (z - radius) / diameter\n"
-                "# case time settling_velocity gap\n")
+                "gap h/d_p = (z - radius) / diameter;\n"
+                "# kinetic energy of the particle and of the fluid in the whole box "
+                "[J]\n"
+                "# case time settling_velocity gap particle_kinetic_energy "
+                "fluid_kinetic_energy\n")
         f.write("\n".join(rows) + "\n")
     print(f"wrote {series}")
 
 
 def read_series(path):
-    """{case: (t, w, gap)} of SERIES."""
+    """{case: (t, w, gap, particle energy, fluid energy)} of SERIES."""
     columns = {}
     with open(path) as f:
         for line in f:
             words = line.split()
             if not words or words[0].startswith("#"):
                 continue
-            columns.setdefault(words[0], []).append([float(x) for x in words[1:4]])
+            columns.setdefault(words[0], []).append([float(x) for x in words[1:6]])
     return {case: tuple(np.array(rows).T) for case, rows in columns.items()}
 
 
@@ -108,7 +112,7 @@ def main():
         collect(args.collect, args.series, args.commit)
     series = read_series(args.series)
 
-    fig, (ax_t, ax_h) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (ax_t, ax_h, ax_e) = plt.subplots(1, 3, figsize=(15, 4))
     print("| case | Re | u_max [m/s] | at t [s] | gap h/d_p there | "
           "experiment [m/s] | error | u_max/u_inf (experiment) | "
           "h/d_p = 1 at t [s] |")
@@ -116,7 +120,7 @@ def main():
     for case, (re, u_exp) in EXPERIMENT.items():
         if case not in series:
             continue
-        t, w, gap = series[case]
+        t, w, gap, energy_p, energy_f = series[case]
         window = np.nonzero(gap >= args.min_gap)[0]
         i = int(window[np.argmax(w[window])])
         error = 100 * (w[i] - u_exp) / u_exp
@@ -128,11 +132,16 @@ def main():
               f"{w[i] / u_inf:.3f} ({ratio_exp}) | {reached} |")
         line, = ax_t.plot(t, w, label=f"{case.upper()}, Re = {re}")
         ax_h.plot(gap, w, color=line.get_color())
+        ax_e.semilogy(t[1:], energy_p[1:], color=line.get_color())
+        ax_e.semilogy(t[1:], energy_f[1:], color=line.get_color(), ls="--")
         for ax in (ax_t, ax_h):
             ax.axhline(u_exp, color=line.get_color(), ls=":", lw=1)
     ax_h.axvline(args.min_gap, color="grey", lw=0.8, ls="--")
     ax_h.invert_xaxis()
     ax_t.set_xlabel("time [s]")
+    ax_e.set_xlabel("time [s]")
+    ax_e.set_ylabel("kinetic energy [J] (solid: particle, dashed: fluid)")
+    ax_e.grid(alpha=0.3)
     ax_h.set_xlabel("gap h / d_p (falling towards the floor)")
     for ax in (ax_t, ax_h):
         ax.set_ylabel("settling velocity [m/s]")
