@@ -526,13 +526,14 @@ namespace particulate {
         "assembled operator). rebuild: they "
         "are built anew for the new positions after every motion. keep: "
         "those of the last geometry stay the preconditioner (FGMRES always "
-        "applies the current operator) until a solve needs more than 1.5 "
-        "times the median FGMRES iterations of the last five solves with a "
-        "fresh velocity preconditioner plus 5, or does not converge; then "
-        "they are rebuilt together. Covered nodes that change, or pressures "
-        "that become decoupled, rebuild L_p; a fresh adaptation, which "
-        "interpolates the flow onto a new mesh, and a checkpoint rebuild "
-        "all.");
+        "applies the current operator). The velocity multigrid is rebuilt "
+        "once a solve needs more than 1.2 times the median FGMRES "
+        "iterations of the last five solves with a fresh one plus 2; the "
+        "Schur approximation's parts when the covered nodes change or "
+        "pressures become decoupled (L_p's structure), or when a solve "
+        "with kept parts does not converge (then all are rebuilt). A fresh "
+        "adaptation, which interpolates the flow onto a new mesh, and a "
+        "checkpoint rebuild all.");
       prm.declare_entry("Chebyshev degree",
                         std::to_string(defaults.chebyshev_degree),
                         Patterns::Integer(1, 50),

@@ -248,8 +248,7 @@ namespace particulate {
     template <int dim>
     bool
     SaddlePointSolver<dim>::schur_ingredients_need_building(
-      const FlowDiscretisation<dim> &d,
-      const bool                     velocity_is_fresh) const
+      const FlowDiscretisation<dim> &d) const
     {
       if (schur_state == SchurState::missing)
         return true;
@@ -264,14 +263,16 @@ namespace particulate {
         return true;
       if (schur_state == SchurState::current)
         return false;
-      // Aged: renewed together with the velocity V-cycle. Kept only with
-      // the matrix-free operator: with the assembled one a kept L_p let
-      // Newton diverge on a Laplace-alpha mesh pressed between a disk and
-      // a wall (fbm_restart_matches_uninterrupted, '_carried'), so it is
-      // rebuilt after every motion there.
-      return velocity_is_fresh
-             || parameters.linear_solver.multigrid_on_moving_mesh
-                  == MultigridOnMovingMesh::rebuild
+      // Aged: kept through the motions of the mesh, whatever the velocity
+      // V-cycle does. FGMRES needs as many iterations with L_p and M_p's
+      // ILU from the mesh of many steps ago as with fresh ones (the
+      // iterations that grow on a moving mesh are the velocity V-cycle's,
+      // doc/performance.md); a kept solve that fails rebuilds them (solve()).
+      // Not with the assembled operator: there a kept L_p let Newton
+      // diverge on a Laplace-alpha mesh pressed between a disk and a wall
+      // (fbm_restart_matches_uninterrupted, '_carried').
+      return parameters.linear_solver.multigrid_on_moving_mesh
+               == MultigridOnMovingMesh::rebuild
              || parameters.linear_solver.velocity_operator
                   == VelocityOperator::assembled;
     }
@@ -300,7 +301,7 @@ namespace particulate {
       const VelocityLinearisation linearisation
         = velocity_linearisation(discretisation, stage);
       bool fresh = velocity_inverse->prepare(linearisation);
-      if (schur_ingredients_need_building(discretisation, fresh))
+      if (schur_ingredients_need_building(discretisation))
         build_schur_ingredients(discretisation);
       const unsigned int max_iterations
         = parameters.linear_solver.maximum_iterations;

@@ -128,11 +128,10 @@ namespace particulate {
       void
       build_schur_ingredients(FlowDiscretisation<dim> &discretisation);
 
-      /** Whether the Schur ingredients are built anew before a solve whose
-       *  velocity block inverse is @p velocity_is_fresh. Collective. */
+      /** Whether the Schur ingredients are built anew before a solve.
+       *  Collective. */
       bool
-      schur_ingredients_need_building(const FlowDiscretisation<dim> &d,
-                                      const bool velocity_is_fresh) const;
+      schur_ingredients_need_building(const FlowDiscretisation<dim> &d) const;
 
       /** How one FGMRES solve ended. */
       struct FgmresOutcome

@@ -37,6 +37,27 @@ namespace particulate {
 
 
 
+    namespace {
+      /*
+       * The V-cycle of a geometry the mesh has since moved from is worn out
+       * once FGMRES needs a fifth more iterations than with a fresh one,
+       * plus 2: a tighter rule than for a kept matrix
+       * (kept_preconditioner_is_worn). A refresh costs about as much as a
+       * dozen iterations and the iterations grow by a few per step after
+       * it, so a refresh every few steps costs least overall; every motion
+       * is too often (doc/performance.md, "Preconditioners on a moving
+       * mesh").
+       */
+      bool
+      kept_geometry_is_worn(const unsigned int iterations,
+                            const unsigned int fresh_iterations)
+      {
+        return iterations > 1.2 * fresh_iterations + 2;
+      }
+    } // namespace
+
+
+
     template <int dim>
     bool
     VelocityMultigridInverse<dim>::prepare(const VelocityLinearisation &a)
@@ -97,8 +118,7 @@ namespace particulate {
               << fresh_iterations << ")" << std::endl;
           return;
         }
-      const bool worn
-        = kept_preconditioner_is_worn(iterations, fresh_iterations);
+      const bool worn = kept_geometry_is_worn(iterations, fresh_iterations);
       log << "      kept V-cycle: " << iterations
           << " FGMRES iterations against " << fresh_iterations
           << " with a fresh one" << (worn ? ": rebuilt" : "") << std::endl;
