@@ -6,10 +6,11 @@
         [--collect BUILD/tests/validation [--commit HASH]]
 
 reads SERIES (one row per step of E1-E4: case, time [s], settling velocity
-[m/s], gap h/d_p, kinetic energy of the particle and of the fluid [J]), prints the report's table of u_max against the experiment
-(taken where the gap is at least --min-gap, as the tests do), u_max/u_inf
-against the experiment's (thesis Table 6.2) and the time the gap reaches
-one diameter, and draws
+[m/s], gap h/d_p, kinetic energy of the particle and of the fluid [J]),
+prints the report's table of u_max against the experiment (taken where the
+gap is at least --min-gap, as the tests do), u_max/u_inf against the
+experiment's (thesis Table 6.2) and the time the gap reaches one diameter,
+and draws
 FIGURE: the settling velocity against time and against the gap, with the
 experiment's u_max, and the kinetic energies against time (thesis Figs 6.6
 and 6.7).
@@ -17,8 +18,8 @@ and 6.7).
 --collect first writes SERIES from the files that `ctest -R
 validation_ten_cate` leaves in the given folder,
 ten-cate-<case>-series.dat (time, settling velocity, gap, kinetic energies;
-written by ten_cate.py --series), with a header naming them and the commit (--commit,
-default: the current HEAD) the runs were made on.
+written by ten_cate.py --series), with a header naming them and the commit
+(--commit, default: the current HEAD) the runs were made on.
 """
 import argparse
 import os
