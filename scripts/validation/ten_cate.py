@@ -106,10 +106,12 @@ def main():
         if args.series and k == 0:
             # the kinetic energies of the particle and of the fluid (the
             # whole box's, the images of a symmetric domain included)
-            energies = [np.interp(t, flow[:, 0], flow[:, flow_names.index(n)])
-                        for n in ("particle_kinetic_energy",
-                                  "fluid_kinetic_energy")]
-            np.savetxt(args.series, np.column_stack((t, w, gap, *energies)),
+            particle_energy = p[:, names.index("kinetic_energy")]
+            fluid_energy = np.interp(
+                t, flow[:, 0], flow[:, flow_names.index("fluid_kinetic_energy")])
+            np.savetxt(args.series,
+                       np.column_stack((t, w, gap, particle_energy,
+                                        fluid_energy)),
                        fmt="%.6g",
                        header=f"ten Cate {case}, {label}: time [s], settling "
                        "velocity [m/s], gap h/d_p, kinetic energy of the "
