@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The sweep of doc/performance.md, "Pressure Laplacian: the AMG smoother":
+# The sweep of doc/developer/fluid.md, "L_p's V-cycle: the smoother":
 # ML settings for the pressure Laplacian's V-cycle on a moving sphere (ten
 # Cate E4 benchmark, matrix-free operator with the velocity multigrid,
 # 'nearest', fractional-step theta, dt = 5 ms). Needs the experiment hook:
