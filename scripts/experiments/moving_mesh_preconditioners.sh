@@ -27,8 +27,8 @@ timer() { # section name, log: calls and seconds of rank 0's timer
     print $3, t[1]; found = 1 } END { if (!found) print 0, 0 }' "$2"
 }
 
-echo "| run | wall [s] | Schur builds (s) | V-cycle updates (s) | Newton steps | FGMRES its | FGMRES [s] | w at t = 0.5 s [m/s] |"
-echo "|---|---|---|---|---|---|---|---|"
+echo "| run | wall [s] | Schur builds (s) | V-cycle updates (s) | mesh motion [s] | Newton steps | FGMRES its | FGMRES [s] | w at t = 0.5 s [m/s] |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for variant in "${variants[@]}"; do
   name="${variant%%|*}"
   edit="${variant#*|}"
@@ -41,11 +41,12 @@ for variant in "${variants[@]}"; do
   wall=$(timer "Total wallclock time elapsed" "$work/log" | cut -d' ' -f2)
   schur=$(timer "fluid: Schur approximation" "$work/log" | awk '{ print $1 " (" $2 ")" }')
   update=$(timer "fluid: velocity multigrid update" "$work/log" | awk '{ print $1 " (" $2 ")" }')
+  motion=$(timer "fluid: mesh motion" "$work/log" | cut -d' ' -f2)
   solve=$(timer "fluid: linear solve" "$work/log" | cut -d' ' -f2)
   counts=$(awk '/^step/ { for (i = 1; i < NF; ++i) {
                   if ($i == "nonlinear") n += $(i + 1)
                   if ($i == "linear") l += $(i + 1) } }
                 END { print n, l }' "$work/log")
   w=$(awk 'END { print $7 }' "$out/particle_0.dat")
-  echo "| $name | $wall | $schur | $update | ${counts% *} | ${counts#* } | $solve | $w |"
+  echo "| $name | $wall | $schur | $update | $motion | ${counts% *} | ${counts#* } | $solve | $w |"
 done

@@ -457,6 +457,7 @@ namespace particulate {
     void
     FlowDiscretisation<dim>::assemble_geometric_matrices()
     {
+      TimerOutput::Scope scope(timer, "fluid: geometric matrices");
       // B, M_p and the lumped velocity mass change (who built
       // preconditioners from them has dropped them)
       pressure_laplacian_update.clear();

@@ -193,7 +193,9 @@ namespace particulate {
     void
     MomentumOperator<dim>::update_geometry()
     {
-      implementation->build();
+      auto &m = *implementation;
+      m.matrix_free.update_mapping(m.mapping);
+      m.linearised = false;
     }
 
 

@@ -57,7 +57,8 @@ namespace particulate {
                        const dealii::Mapping<dim>    &mapping);
       ~MomentumOperator();
 
-      /** Rebuild the geometric data (after the mesh vertices moved). */
+      /** Recompute the geometric data after the mesh vertices moved (the
+       *  mesh's cells and DoFs unchanged). */
       void
       update_geometry();
 

@@ -159,6 +159,14 @@ namespace particulate {
       make_level_constraints();
       void
       build_levels();
+      /** The levels' geometric data for the current vertex positions: the
+       *  mesh and the DoFs are those build_levels() saw. */
+      void
+      update_level_mappings();
+      /** Level operators and V-cycles follow lazily, when a stage needs
+       *  them. */
+      void
+      invalidate_hierarchies();
 
       const DoFHandler<dim> &system_dofs;
       const IndexSet         owned_velocity;
@@ -176,9 +184,9 @@ namespace particulate {
       std::vector<types::global_dof_index> active_to_level;
       std::vector<types::global_dof_index> masked_active_dofs;
 
-      MGLevelObject<std::shared_ptr<const LevelMatrixFree<dim>>> matrix_free;
-      AffineConstraints<float>         coarse_constraints;
-      MGTransferMatrixFree<dim, float> transfer;
+      MGLevelObject<std::shared_ptr<LevelMatrixFree<dim>>> matrix_free;
+      AffineConstraints<float>                             coarse_constraints;
+      MGTransferMatrixFree<dim, float>                     transfer;
       /// the coarse matrix's pattern, locally owned rows, and the constant
       /// modes of its ML (shared by the hierarchies)
       std::unique_ptr<TrilinosWrappers::SparsityPattern> coarse_pattern;
@@ -470,7 +478,29 @@ namespace particulate {
                             [coarse_owned.index_within_set(indices[j])]
                   = true;
           }
-      // the hierarchies follow lazily, when a stage needs them
+      invalidate_hierarchies();
+    }
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::Implementation::update_level_mappings()
+    {
+      // Only the Jacobians at the quadrature points change when vertices
+      // move: DoF numbering, level partitioners, the transfer and the
+      // coarse pattern stay as they are.
+      for (unsigned int level = 0; level <= finest_level; ++level)
+        matrix_free[level]->update_mapping(mapping);
+      invalidate_hierarchies();
+    }
+
+
+
+    template <int dim>
+    void
+    VelocityMultigrid<dim>::Implementation::invalidate_hierarchies()
+    {
       for (auto &h : hierarchies)
         {
           h.geometry_is_current = false;
@@ -609,7 +639,7 @@ namespace particulate {
     {
       TimerOutput::Scope scope(implementation->timer,
                                "fluid: velocity multigrid setup");
-      implementation->build_levels();
+      implementation->update_level_mappings();
       set_masked_dofs(implementation->masked_active_dofs);
     }
 

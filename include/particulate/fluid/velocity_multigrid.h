@@ -77,7 +77,8 @@ namespace particulate {
                         dealii::TimerOutput           &timer);
       ~VelocityMultigrid();
 
-      /** Rebuild the geometric data (after the mesh vertices moved). */
+      /** Recompute the geometric data after the mesh vertices moved (the
+       *  mesh's cells and DoFs unchanged). */
       void
       update_geometry();
 
