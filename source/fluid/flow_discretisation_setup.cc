@@ -17,6 +17,7 @@
 
 #include "enclosed_fluid.h"
 #include "flow_pressure_mode.h"
+#include "geometric_cell_integrals.h"
 #include "momentum_operator.h"
 #include "undetermined_pressures.h"
 
@@ -477,89 +478,49 @@ namespace particulate {
                               update_values | update_JxW_values
                                 | (with_gradient ? update_gradients :
                                                                         update_default));
-      const unsigned int                 dofs_per_cell = fe.n_dofs_per_cell();
-      FullMatrix<double> cell_mass(dofs_per_cell, dofs_per_cell);
-      // B^T: row velocity phi_i (component c_i), column pressure psi_k,
-      // entry -(psi_k, d_{c_i} phi_i) as in the system's assembly
-      FullMatrix<double> cell_gradient(dofs_per_cell, dim + 1);
-      std::vector<types::global_dof_index> pressure_columns(dim + 1);
-      Vector<double>                       cell_lumped(dofs_per_cell);
-      std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-      const FEValuesExtractors::Scalar     pressure(dim);
-      std::vector<unsigned int>            pressure_dofs;
-      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        if (fe.system_to_component_index(i).first == dim)
-          pressure_dofs.push_back(i);
+      GeometricCellIntegrals<dim>        integrals(fe);
+      const auto &velocity_dofs = integrals.velocity_dofs();
+      const auto &pressure_dofs = integrals.pressure_dofs();
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> velocity_rows(velocity_dofs.size());
+      std::vector<types::global_dof_index> pressure_rows(pressure_dofs.size());
+      std::vector<types::global_dof_index> pressure_columns(
+        pressure_dofs.size());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            cell_mass   = 0;
-            cell_lumped = 0;
-            if (with_gradient)
-              {
-                cell_gradient = 0;
-                for (unsigned int q = 0; q < quadrature.size(); ++q)
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    {
-                      const unsigned int ci
-                        = fe.system_to_component_index(i).first;
-                      if (ci == dim)
-                        continue;
-                      const double d_phi
-                        = fe_values.shape_grad_component(i, q, ci)[ci];
-                      for (unsigned int k = 0; k < pressure_dofs.size(); ++k)
-                        cell_gradient(i, k)
-                          -= fe_values.shape_value(pressure_dofs[k], q) * d_phi
-                             * fe_values.JxW(q);
-                    }
-              }
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const unsigned int ci = fe.system_to_component_index(i).first;
-                  if (ci == dim)
-                    {
-                      for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                        if (fe.system_to_component_index(j).first == dim)
-                          cell_mass(i, j) += fe_values[pressure].value(i, q)
-                                             * fe_values[pressure].value(j, q)
-                                             * fe_values.JxW(q);
-                    }
-                  else
-                    // row sum of the component's mass matrix = integral of
-                    // the shape function (partition of unity)
-                    cell_lumped(i)
-                      += fe_values.shape_value(i, q) * fe_values.JxW(q);
-                }
+            integrals.compute(fe_values, with_gradient);
             cell->get_dof_indices(dof_indices);
+            for (unsigned int k = 0; k < pressure_dofs.size(); ++k)
+              {
+                pressure_rows[k]    = dof_indices[pressure_dofs[k]];
+                pressure_columns[k] = pressure_rows[k] - dofs_per_block[0];
+              }
             // pressure rows only, and the discontinuous pressure has no
             // constraints: added directly (the velocity constraints, which
             // change with the bodies, have no place in this matrix)
-            for (const unsigned int i : pressure_dofs)
-              for (const unsigned int j : pressure_dofs)
-                pressure_mass.add(dof_indices[i],
-                                  dof_indices[j],
-                                  cell_mass(i, j));
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              if (fe.system_to_component_index(i).first < dim)
-                lumped(dof_indices[i]) += cell_lumped(i);
+            for (unsigned int k = 0; k < pressure_dofs.size(); ++k)
+              pressure_mass.add(pressure_rows[k],
+                                pressure_rows.size(),
+                                pressure_rows.data(),
+                                integrals.mass_row(k));
+            for (unsigned int a = 0; a < velocity_dofs.size(); ++a)
+              velocity_rows[a] = dof_indices[velocity_dofs[a]];
+            // the velocity block comes first: its global and block indices
+            // agree
+            lumped.block(0).add(velocity_rows, integrals.lumped());
             if (with_gradient)
-              {
-                for (unsigned int k = 0; k < pressure_dofs.size(); ++k)
-                  pressure_columns[k]
-                    = dof_indices[pressure_dofs[k]] - dofs_per_block[0];
-                for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  if (fe.system_to_component_index(i).first < dim)
-                    gradient_matrix.add(dof_indices[i],
-                                        pressure_dofs.size(),
-                                        pressure_columns.data(),
-                                        &cell_gradient(i, 0));
-              }
+              for (unsigned int a = 0; a < velocity_dofs.size(); ++a)
+                gradient_matrix.add(velocity_rows[a],
+                                    pressure_columns.size(),
+                                    pressure_columns.data(),
+                                    integrals.gradient_row(a));
           }
       if (with_gradient)
         {
           gradient_matrix.compress(VectorOperation::add);
+          TimerOutput::Scope operator_scope(timer, "fluid: operator geometry");
           momentum_operator->update_geometry();
         }
       pressure_mass.compress(VectorOperation::add);
