@@ -46,8 +46,8 @@ namespace particulate {
               }
           }
         AssertDimension(pressure.size(), n_p);
-        gradient_values.resize(velocity.size() * pressure.size());
-        mass_values.resize(pressure.size() * pressure.size());
+        gradient_values.resize(velocity.size() * n_p);
+        mass_values.resize(n_p * n_p);
         lumped_values.resize(velocity.size());
       }
 
@@ -99,13 +99,13 @@ namespace particulate {
       const double *
       gradient_row(const unsigned int a) const
       {
-        return &gradient_values[a * pressure.size()];
+        return &gradient_values[a * n_p];
       }
       /** Row @p k of M_p: one entry per pressure DoF. */
       const double *
       mass_row(const unsigned int k) const
       {
-        return &mass_values[k * pressure.size()];
+        return &mass_values[k * n_p];
       }
       /** One entry per velocity DoF. */
       const std::vector<double> &
