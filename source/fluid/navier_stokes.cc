@@ -141,6 +141,15 @@ namespace particulate {
 
 
     template <int dim>
+    SolverTraffic
+    NavierStokes<dim>::solver_traffic() const
+    {
+      return linear_solver->traffic(discretisation);
+    }
+
+
+
+    template <int dim>
     std::pair<unsigned long, unsigned long>
     NavierStokes<dim>::pressure_poisson_counts() const
     {

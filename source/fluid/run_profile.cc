@@ -27,6 +27,18 @@ namespace particulate {
         = flow.pressure_poisson_counts();
       profile.flow_memory_bytes
         = Utilities::MPI::sum(flow.memory_consumption(), comm);
+      const SolverTraffic local = flow.solver_traffic();
+      auto               &all   = profile.traffic;
+      all.velocity_operator
+        = Utilities::MPI::sum(local.velocity_operator, comm);
+      all.gradient = Utilities::MPI::sum(local.gradient, comm);
+      all.velocity_preconditioner
+        = Utilities::MPI::sum(local.velocity_preconditioner, comm);
+      all.pressure_laplacian_iteration
+        = Utilities::MPI::sum(local.pressure_laplacian_iteration, comm);
+      all.pressure_mass_inverse
+        = Utilities::MPI::sum(local.pressure_mass_inverse, comm);
+      all.system_vector = Utilities::MPI::sum(local.system_vector, comm);
     }
 
     template void

@@ -435,6 +435,59 @@ namespace particulate {
 
 
 
+    namespace {
+      /** Values and column indices of this rank's rows, and the row
+       *  offsets: what one product streams of the matrix. */
+      double
+      stored_bytes(const TrilinosWrappers::SparseMatrix &matrix)
+      {
+        const Epetra_CrsMatrix &m = matrix.trilinos_matrix();
+        return (sizeof(double) + sizeof(int)) * m.NumMyNonzeros()
+               + sizeof(int) * (m.NumMyRows() + 1.);
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    SolverTraffic
+    SaddlePointSolver<dim>::traffic(const FlowDiscretisation<dim> &d) const
+    {
+      const auto   &owned           = d.get_owned_partitioning();
+      const double  vector          = sizeof(double) * owned[0].n_elements();
+      const double  pressure_vector = sizeof(double) * owned[1].n_elements();
+      SolverTraffic t;
+      t.system_vector      = vector + pressure_vector;
+      const auto *momentum = d.get_momentum_operator();
+      // the source read, the product written
+      t.velocity_operator
+        = 2. * vector
+          + (momentum ? momentum->memory_consumption() :
+                        stored_bytes(d.get_system_matrix().block(0, 0)));
+      t.gradient = vector + pressure_vector
+                   + stored_bytes(momentum ? d.get_constrained_gradient() :
+                                             d.get_system_matrix().block(0, 1));
+      t.velocity_preconditioner
+        = velocity_inverse ?
+            velocity_inverse->bytes_per_application(t.velocity_operator) :
+            0.;
+      // the CG product, and on the AMG's finest level the residual and
+      // one pass over L_p (its ILU factors, or one Chebyshev product) per
+      // smoother sweep before and after; CG's and the V-cycle's vectors
+      const double sweeps = parameters.linear_solver.pressure_laplacian_smoother
+                                == PressureLaplacianSmoother::ilu ?
+                              2. :
+                              4.;
+      t.pressure_laplacian_iteration
+        = (2. + sweeps) * stored_bytes(d.get_pressure_laplacian())
+          + 8. * pressure_vector;
+      t.pressure_mass_inverse
+        = stored_bytes(d.get_pressure_mass()) + 2. * pressure_vector;
+      return t;
+    }
+
+
+
     template <int dim>
     std::size_t
     SaddlePointSolver<dim>::memory_consumption() const

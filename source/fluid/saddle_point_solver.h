@@ -2,6 +2,7 @@
 #define particulate_fluid_saddle_point_solver_h
 
 #include <particulate/fluid/flow_discretisation.h>
+#include <particulate/fluid/run_profile.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -107,6 +108,11 @@ namespace particulate {
 
       std::size_t
       memory_consumption() const;
+
+      /** What one application of each part of the solve moves through
+       *  memory on this rank, with the matrices of @p discretisation. */
+      SolverTraffic
+      traffic(const FlowDiscretisation<dim> &discretisation) const;
 
     private:
       /**

@@ -49,6 +49,13 @@ namespace particulate {
       }
       std::size_t
       memory_consumption() const override;
+      /** The finest level: its pre- and post-smoothing sweeps and the
+       *  residual, each a pass over the velocity block. */
+      double
+      bytes_per_application(const double operator_bytes) const override
+      {
+        return (2. * parameters.amg_smoother_sweeps + 1.) * operator_bytes;
+      }
 
     private:
       const LinearSolverParameters                              &parameters;

@@ -119,6 +119,11 @@ namespace particulate {
 
       virtual std::size_t
       memory_consumption() const = 0;
+
+      /** Bytes one application moves through memory at least on this
+       *  rank, given those of one product with the velocity block. */
+      virtual double
+      bytes_per_application(const double operator_bytes) const = 0;
     };
 
     /**

@@ -58,6 +58,12 @@ namespace particulate {
       {
         return 0;
       }
+      /** One product with the velocity block per degree. */
+      double
+      bytes_per_application(const double operator_bytes) const override
+      {
+        return degree * operator_bytes;
+      }
 
     private:
       /** Multiplication by the inverse diagonal of a Trilinos matrix

@@ -808,6 +808,26 @@ namespace particulate {
       return bytes;
     }
 
+    template <int dim>
+    double
+    VelocityMultigrid<dim>::bytes_per_vcycle() const
+    {
+      const auto &m = *implementation;
+      const auto &h = m.hierarchies[m.active];
+      if (!h.geometry_is_current)
+        return 0.;
+      const double products = 2. * m.settings.smoother_degree + 1.;
+      double       bytes    = 2. * m.transfer.memory_consumption();
+      for (unsigned int level = 1; level <= m.finest_level; ++level)
+        bytes += products
+                 * (h.operators[level].memory_consumption()
+                    + 2. * sizeof(float)
+                        * m.dofs.locally_owned_mg_dofs(level).n_elements());
+      return bytes;
+    }
+
+
+
     template class VelocityMultigrid<2>;
     template class VelocityMultigrid<3>;
   } // namespace fluid

@@ -74,6 +74,11 @@ namespace particulate {
       {
         return multigrid->memory_consumption();
       }
+      double
+      bytes_per_application(const double) const override
+      {
+        return multigrid->bytes_per_vcycle();
+      }
 
     private:
       void

@@ -4,6 +4,7 @@
 #include <particulate/core/simulation_parameters.h>
 #include <particulate/fluid/flow_discretisation.h>
 #include <particulate/fluid/fluid_parameters.h>
+#include <particulate/fluid/run_profile.h>
 #include <particulate/fluid/time_integrator.h>
 #include <particulate/fluid/viscosity_model.h>
 
@@ -227,6 +228,11 @@ namespace particulate {
        */
       std::size_t
       memory_consumption() const;
+
+      /** What one application of each part of the linear solve moves
+       *  through memory on this rank (the benchmarks' bandwidth bound). */
+      SolverTraffic
+      solver_traffic() const;
 
       /** The matrix of the last linear solve (for benchmarks); empty with
        *  'Velocity operator = matrix-free'. */

@@ -15,6 +15,34 @@ namespace particulate {
     class NavierStokes;
 
     /**
+     * Bytes that one application of each part of the linear solve must
+     * move between memory and the cores, from the sizes of the data the
+     * part streams: a lower bound once the data exceed the caches (the
+     * AMG's coarse levels, the velocity V-cycle's coarse solve and index
+     * data beyond the matrices' column indices are not counted). With the
+     * counts of a run and the machine's bandwidth they give the time a
+     * memory-bound solve needs at least (tests/performance).
+     */
+    struct SolverTraffic
+    {
+      /// A v: the velocity block's data (matrix-free: geometry and
+      /// linearisation fields; assembled: values and column indices) and
+      /// the vectors read and written
+      double velocity_operator = 0.;
+      /// one product with B^T or B (values, column indices, vectors)
+      double gradient = 0.;
+      /// one application of the velocity block inverse
+      double velocity_preconditioner = 0.;
+      /// one CG iteration with L_p: its product, the finest level of its
+      /// AMG V-cycle (smoother sweeps and residual) and the CG vectors
+      double pressure_laplacian_iteration = 0.;
+      /// one application of M_p's ILU (M_p's pattern) and its vectors
+      double pressure_mass_inverse = 0.;
+      /// one vector of the whole system (velocity and pressure)
+      double system_vector = 0.;
+    };
+
+    /**
      * Where the time of a run went and what the flow solver needed: what
      * the benchmarks in tests/performance print. Both time loops (pure flow
      * and particulate flow) fill it at the end of their run.
@@ -36,6 +64,9 @@ namespace particulate {
       double wall_seconds = 0.;
       /// the flow solver's matrices, preconditioners and vectors, all ranks
       std::size_t flow_memory_bytes = 0;
+      /// the linear solve's traffic per application, all ranks (the
+      /// solver as the run ended)
+      SolverTraffic traffic;
 
       /** Seconds of timer section @p name (0 when it never ran). */
       double

@@ -124,6 +124,15 @@ namespace particulate {
       std::size_t
       memory_consumption() const;
 
+      /** Bytes one V-cycle of the active hierarchy moves through memory at
+       *  least on this rank: on every level above the coarse one the level
+       *  operator's data and two vectors for each of the 2 d + 1 products
+       *  of its smoothing (degree d, before and after) and residual, and
+       *  the transfer's data twice (restriction and prolongation). The
+       *  coarse solve is not counted. */
+      double
+      bytes_per_vcycle() const;
+
     private:
       struct Implementation;
       std::unique_ptr<Implementation> implementation;

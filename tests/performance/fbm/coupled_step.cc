@@ -18,7 +18,10 @@
 //    ranks at once, and what the product with the final system matrix achieves
 //    (its bytes, values and column indices, over its time); the peak
 //    resident set is a high-water mark, so list the levels coarse to fine;
-//  - the per-phase profile of the run's timers.
+//  - the per-phase profile of the run's timers;
+//  - the bandwidth bound of the linear solves: the bytes their parts must
+//    stream (bandwidth_bound.h) over the read bandwidth, against the
+//    FGMRES time measured.
 // The default is the reference's set-up (Crank-Nicolson, dt = 1 ms).
 // Never gates on time.
 //
@@ -40,6 +43,7 @@
 #include <string>
 #include <vector>
 
+#include "../bandwidth_bound.h"
 #include "../machine_measurements.h"
 #include "../phase_table.h"
 
@@ -183,5 +187,6 @@ main(int argc, char **argv)
     runs.push_back(
       {"level " + std::to_string(r.level), &r.summary, r.summary.n_steps});
   print_phase_table(runs);
+  print_bandwidth_bound(runs, reading);
   return 0;
 }

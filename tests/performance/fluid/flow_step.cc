@@ -11,7 +11,8 @@
 // velocity-node-step per core, nonlinear and linear iterations (and the
 // linear iterations per nonlinear step against the level before: the
 // multigrid's robustness under refinement), memory per DoF and the
-// bandwidth the assembled matrix reaches in a product. Never gates on time.
+// bandwidth the assembled matrix reaches in a product, and the bandwidth
+// bound of the linear solves (bandwidth_bound.h). Never gates on time.
 //
 // Usage: mpirun -np 2 bench_flow_step [--steps N] [--set "prm text"]
 //          [dfg-2d-2 level...] [channel-3d level...]
@@ -32,6 +33,7 @@
 #include <vector>
 
 #include "../../fluid/test_utilities.h"
+#include "../bandwidth_bound.h"
 #include "../machine_measurements.h"
 #include "../phase_table.h"
 
@@ -175,6 +177,7 @@ namespace {
       runs.push_back(
         {"level " + std::to_string(r.level), &r.summary, r.summary.n_steps});
     print_phase_table(runs);
+    print_bandwidth_bound(runs, read_bandwidth);
   }
 } // namespace
 
