@@ -43,8 +43,9 @@ namespace particulate {
         "section deal.II's five-cell disk and 'Subdivisions' z-value cells "
         "along the axis, with boundary ids 0 mantle, 1 bottom (lower z), "
         "2 top. "
-        "'channel with cylinder': the DFG benchmark channel (height and depth "
-        "0.41 m, cylinder diameter 0.1 m, axis along z at y = 0.2 m) with "
+        "'channel with cylinder': the DFG benchmark channel (height 0.41 m, "
+        "in 3D 'Channel depth' deep; cylinder diameter 0.1 m, axis along z at "
+        "y = 0.2 m) with "
         "boundary ids 0 inflow, 1 outflow, 2 cylinder, 3 walls. 'file': read "
         "'File name'.");
       prm.declare_entry("File name",
@@ -111,6 +112,13 @@ namespace particulate {
                         Patterns::Double(0.5),
                         "Channel with cylinder: length of the channel [m] "
                         "(2.2 for DFG 2D, 2.5 for DFG 3D-1Z).");
+      prm.declare_entry("Channel depth",
+                        number_text(defaults.channel_depth),
+                        Patterns::Double(0.),
+                        "Channel with cylinder, 3D: extent of the channel "
+                        "along the cylinder's axis z [m] (0.41 for DFG 3D; "
+                        "0.1025 for the oscillating-cylinder slab). The "
+                        "mesh is scaled along z, keeping its cell layers.");
       prm.leave_subsection();
     }
 
@@ -150,6 +158,7 @@ namespace particulate {
       cylinder_shells   = prm.get_integer("Cylinder shells");
       cylinder_center_x = prm.get_double("Cylinder center x");
       channel_length    = prm.get_double("Channel length");
+      channel_depth = core::get_positive_double(prm, "Channel depth", "Mesh");
       prm.leave_subsection();
     }
 
@@ -216,6 +225,31 @@ namespace particulate {
 
 
       /**
+       * The curved manifolds of a channel with cylinder after its vertices
+       * moved: the cylinder's axis at x = @p center_x, y = 0.2, and the
+       * transfinite blend around it rebuilt from the moved coarse cells.
+       */
+      template <int dim>
+      void
+      attach_channel_manifolds(Triangulation<dim> &tria, const double center_x)
+      {
+        Point<dim> axis_point;
+        axis_point[0] = center_x;
+        axis_point[1] = 0.2;
+        if constexpr (dim == 2)
+          tria.set_manifold(0, PolarManifold<2>(axis_point));
+        else
+          tria.set_manifold(0,
+                            CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}),
+                                                   axis_point));
+        TransfiniteInterpolationManifold<dim> transfinite;
+        transfinite.initialize(tria);
+        tria.set_manifold(1, transfinite);
+      }
+
+
+
+      /**
        * deal.II's channel_with_cylinder has its axis at x = 0.2 and length
        * 2.2. Move the axis to @p center_x and set the length by a piecewise
        * linear map of x that is a pure shift around the cylinder (so the
@@ -246,19 +280,29 @@ namespace particulate {
           },
           tria);
 
-        // the curved manifolds depend on where the axis is
-        Point<dim> axis_point;
-        axis_point[0] = center_x;
-        axis_point[1] = 0.2;
-        if constexpr (dim == 2)
-          tria.set_manifold(0, PolarManifold<2>(axis_point));
-        else
-          tria.set_manifold(0,
-                            CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}),
-                                                   axis_point));
-        TransfiniteInterpolationManifold<dim> transfinite;
-        transfinite.initialize(tria);
-        tria.set_manifold(1, transfinite);
+        attach_channel_manifolds(tria, center_x);
+      }
+
+
+
+      /**
+       * Scale a 3D channel with cylinder along the cylinder's axis z to the
+       * depth @p depth (deal.II builds it 0.41 m deep), keeping its layers.
+       */
+      template <int dim>
+      void
+      set_channel_depth(Triangulation<dim> &tria,
+                        const double        center_x,
+                        const double        depth)
+      {
+        GridTools::transform(
+          [&](const Point<dim> &p) {
+            Point<dim> q = p;
+            q[dim - 1] *= depth / 0.41;
+            return q;
+          },
+          tria);
+        attach_channel_manifolds(tria, center_x);
       }
 
       template <int dim>
@@ -435,6 +479,9 @@ namespace particulate {
                                                  /*colorize=*/true);
             if (p.cylinder_center_x != 0.2 || p.channel_length != 2.2)
               place_cylinder(serial, p.cylinder_center_x, p.channel_length);
+            if constexpr (dim == 3)
+              if (p.channel_depth != 0.41)
+                set_channel_depth(serial, p.cylinder_center_x, p.channel_depth);
             break;
           case MeshParameters::Type::file:
             read_mesh_file(p, serial);

@@ -369,6 +369,10 @@ namespace {
                 mesh.channel_length,
                 m.channel_length,
                 "Mesh: Channel length");
+    check_equal(checker,
+                mesh.channel_depth,
+                m.channel_depth,
+                "Mesh: Channel depth");
 
     const auto checkpoint = read_core<core::CheckpointParameters>();
     const core::CheckpointParameters c;

@@ -37,8 +37,9 @@ namespace particulate {
       double              grading_ratio        = 1.2;
       double              cylinder_shell_width = 0.03;
       unsigned int        cylinder_shells      = 2;
-      double cylinder_center_x = 0.2; ///< [m], DFG 2D: 0.2, 3D-1Z: 0.5
-      double channel_length    = 2.2; ///< [m], DFG 2D: 2.2, 3D-1Z: 2.5
+      double cylinder_center_x = 0.2;  ///< [m], DFG 2D: 0.2, 3D-1Z: 0.5
+      double channel_length    = 2.2;  ///< [m], DFG 2D: 2.2, 3D-1Z: 2.5
+      double channel_depth     = 0.41; ///< [m], z extent of a 3D channel
       /// directory of the `.prm` file: relative mesh paths start there
       std::string base_directory = ".";
 
