@@ -285,9 +285,12 @@ namespace particulate {
 
 
 
+      /// depth of deal.II's 3D channel with cylinder [m]
+      constexpr double generated_channel_depth = 0.41;
+
       /**
        * Scale a 3D channel with cylinder along the cylinder's axis z to the
-       * depth @p depth (deal.II builds it 0.41 m deep), keeping its layers.
+       * depth @p depth, keeping its layers.
        */
       template <int dim>
       void
@@ -298,7 +301,7 @@ namespace particulate {
         GridTools::transform(
           [&](const Point<dim> &p) {
             Point<dim> q = p;
-            q[dim - 1] *= depth / 0.41;
+            q[dim - 1] *= depth / generated_channel_depth;
             return q;
           },
           tria);
@@ -480,7 +483,7 @@ namespace particulate {
             if (p.cylinder_center_x != 0.2 || p.channel_length != 2.2)
               place_cylinder(serial, p.cylinder_center_x, p.channel_length);
             if constexpr (dim == 3)
-              if (p.channel_depth != 0.41)
+              if (p.channel_depth != generated_channel_depth)
                 set_channel_depth(serial, p.cylinder_center_x, p.channel_depth);
             break;
           case MeshParameters::Type::file:
