@@ -233,15 +233,7 @@ namespace particulate {
       void
       attach_channel_manifolds(Triangulation<dim> &tria, const double center_x)
       {
-        Point<dim> axis_point;
-        axis_point[0] = center_x;
-        axis_point[1] = 0.2;
-        if constexpr (dim == 2)
-          tria.set_manifold(0, PolarManifold<2>(axis_point));
-        else
-          tria.set_manifold(0,
-                            CylindricalManifold<3>(Tensor<1, 3>({0., 0., 1.}),
-                                                   axis_point));
+        tria.set_manifold(0, *cylinder_axis_manifold<dim>(center_x, 0.2));
         TransfiniteInterpolationManifold<dim> transfinite;
         transfinite.initialize(tria);
         tria.set_manifold(1, transfinite);
@@ -576,6 +568,21 @@ namespace particulate {
       return box;
     }
 
+    template <int dim>
+    std::unique_ptr<Manifold<dim>>
+    cylinder_axis_manifold(const double x, const double y)
+    {
+      Point<dim> axis_point;
+      axis_point[0] = x;
+      axis_point[1] = y;
+      if constexpr (dim == 2)
+        return std::make_unique<PolarManifold<2>>(axis_point);
+      else
+        return std::make_unique<CylindricalManifold<3>>(Tensor<1, 3>(
+                                                          {0., 0., 1.}),
+                                                        axis_point);
+    }
+
     template void
     create_serial_mesh<2>(const MeshParameters &, Triangulation<2> &);
     template void
@@ -586,6 +593,10 @@ namespace particulate {
     template void
     create_mesh<3>(const MeshParameters &,
                    parallel::fullydistributed::Triangulation<3> &);
+    template std::unique_ptr<Manifold<2>>
+    cylinder_axis_manifold<2>(const double, const double);
+    template std::unique_ptr<Manifold<3>>
+    cylinder_axis_manifold<3>(const double, const double);
     template std::vector<unsigned int>
     global_boundary_ids<2>(
       const parallel::fullydistributed::Triangulation<2> &);

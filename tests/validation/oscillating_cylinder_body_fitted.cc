@@ -23,13 +23,10 @@
 #include <particulate/fluid/flow_simulation.h>
 #include <particulate/fluid/navier_stokes.h>
 
-#include <deal.II/grid/manifold_lib.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 
 #include "../fluid/test_utilities.h"
 
@@ -37,22 +34,6 @@ using namespace dealii;
 using namespace particulate;
 
 namespace {
-  /** The cylinder's axis through (@p x, @p y), along z in 3D. */
-  template <int dim>
-  std::unique_ptr<Manifold<dim>>
-  cylinder_manifold(const double x, const double y)
-  {
-    Point<dim> axis_point;
-    axis_point[0] = x;
-    axis_point[1] = y;
-    if constexpr (dim == 2)
-      return std::make_unique<PolarManifold<2>>(axis_point);
-    else
-      return std::make_unique<CylindricalManifold<3>>(Tensor<1, 3>(
-                                                        {0., 0., 1.}),
-                                                      axis_point);
-  }
-
   template <int dim>
   void
   run(fluid::FlowCaseParameters &p,
@@ -104,7 +85,7 @@ namespace {
             cell->vertex(v) = x;
           }
       // the curved wall of the hole moves with the cylinder
-      tria.set_manifold(0, *cylinder_manifold<dim>(X0 + s, Y0));
+      tria.set_manifold(0, *core::cylinder_axis_manifold<dim>(X0 + s, Y0));
     };
 
     core::TimeSeriesWriter series(

@@ -4,7 +4,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/grid/manifold.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -88,6 +90,14 @@ namespace particulate {
                       const double fine_upper,
                       const double h,
                       const double ratio);
+
+    /**
+     * The curved wall of a channel with cylinder: the cylinder's axis through
+     * (@p x, @p y), along z in 3D (manifold id 0 of the generated mesh).
+     */
+    template <int dim>
+    std::unique_ptr<dealii::Manifold<dim>>
+    cylinder_axis_manifold(const double x, const double y);
 
     /** All boundary ids present on the (global) mesh. */
     template <int dim>
