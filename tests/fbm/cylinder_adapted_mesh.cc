@@ -39,13 +39,17 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                             span = 0.1025, radius = 0.05;
-  // a short piece of the slab of prm/oscillating-cylinder (3 cells per
-  // diameter after two refinements, 4 cell layers across the span),
-  // free-slip end walls, inside marking, two steps
+  // a short piece of the slab of prm/oscillating-cylinder on cubes of 0.1 m
+  // (4 cells per diameter after two refinements, 4 cell layers across the
+  // span), free-slip end walls, inside marking, the surface vertices
+  // carried, two steps
   auto parameters = fbm::read_particulate_flow_case(
     testing::source_path("prm/oscillating-cylinder/slab-3d-laplace-alpha.prm"),
     "subsection Mesh\n set Lower corner = 0.8, 0, 0\n"
-    " set Upper corner = 1.4, 0.41, 0.1025\n set Subdivisions = 6, 4, 1\nend\n"
+    " set Upper corner = 1.4, 0.41, 0.1025\n set Subdivisions = 6, 4, 1\n"
+    " set Refinements = 2\nend\n"
+    "subsection Mesh deformation\n"
+    " set Moving bodies = carry surface vertices\nend\n"
     "subsection Boundary conditions\n set No-slip = 0, 1, 2, 3\n"
     " set Free-slip = 4, 5\nend\n"
     "subsection Particles\n set Covered nodes = inside\nend\n"
