@@ -18,6 +18,13 @@ PERCENT of the experiment. --series writes the first run's time, settling
 velocity, gap and the kinetic energies of particle and fluid, a few kB,
 for the report (scripts/validation/
 ten_cate_report.py).
+
+Each run's line also gives the time the gap falls to one diameter, the
+first fresh adaptation of the carried mesh (mesh.dat's column
+'readapted') against the time of u_max, and the rebound: the largest rise
+of the settling velocity above its lowest value since u_max, in % of
+u_max (a sphere approaching a wall only slows down). --max-rebound
+PERCENT fails a run whose rebound exceeds it.
 """
 import argparse
 import os
@@ -45,6 +52,38 @@ def read_series(path):
     return names, np.loadtxt(path, ndmin=2)
 
 
+def first_fresh_adaptation(folder):
+    """The time of the carried mesh's first fresh adaptation, or None."""
+    path = os.path.join(folder, "mesh.dat")
+    if not os.path.exists(path):
+        return None
+    names, m = read_series(path)
+    if "readapted" not in names:
+        return None
+    fresh = np.nonzero(m[:, names.index("readapted")] > 0)[0]
+    return m[fresh[0], 0] if fresh.size else None
+
+
+def rebound(w, peak):
+    """The largest rise of w above its running minimum after index peak."""
+    after = w[peak:]
+    return float(np.max(after - np.minimum.accumulate(after)))
+
+
+def describe_approach(t, w, gap, peak, fresh):
+    """The gap's h/d_p = 1 time, the first fresh adaptation against the
+    peak and the rebound, as one line's clauses."""
+    below = np.nonzero(gap <= 1.)[0]
+    reached = f"at {t[below[0]]:.3f} s" if below.size else "not reached"
+    if fresh is None:
+        adaptation = "no fresh adaptation"
+    else:
+        order = "after" if fresh > t[peak] else "before"
+        adaptation = f"first fresh adaptation at t = {fresh:.3f} s ({order} u_max)"
+    return (f"h/d_p = 1 {reached}; {adaptation}; rebound "
+            f"{100 * rebound(w, peak) / w[peak]:.2f} % of u_max")
+
+
 def identify(folder):
     """The experiment a run reproduces, from its fluid properties."""
     rho = float(used_value(folder, "Density"))
@@ -68,6 +107,9 @@ def main():
                         help="bound on |u_max error| [%%]; exit 1 beyond it")
     parser.add_argument("--min-gap", type=float, default=0.,
                         help="take u_max where the gap h/d_p >= this")
+    parser.add_argument("--max-rebound", type=float, default=None,
+                        help="bound on the rebound after u_max [%% of u_max]; "
+                        "exit 1 beyond it")
     parser.add_argument("--series", default=None,
                         help="write time, settling velocity, gap and the "
                         "kinetic energies of the first run to this file")
@@ -103,6 +145,12 @@ def main():
                 failures.append(f"{case} {label}: u_max error "
                                 f"{100 * error:+.2f} % beyond "
                                 f"{args.max_error} %")
+        approach = describe_approach(t, w, gap, i, first_fresh_adaptation(folder))
+        if (args.max_rebound is not None
+                and 100 * rebound(w, i) / w[i] > args.max_rebound):
+            failures.append(f"{case} {label}: the velocity rises again by "
+                            f"{100 * rebound(w, i) / w[i]:.2f} % of u_max "
+                            f"after its maximum, beyond {args.max_rebound} %")
         if args.series and k == 0:
             # the kinetic energies of the particle and of the fluid (the
             # whole box's, the images of a symmetric domain included)
@@ -118,7 +166,7 @@ def main():
                        "particle and of the fluid [J]")
         print(f"{case} {label}: u_max = {w[i]:.5f} m/s at t = {t[i]:.3f} s, "
               f"experiment {u_exp:.5f} m/s, error {100 * error:+.2f} % "
-              f"(run to t = {t[-1]:.3f} s)")
+              f"(run to t = {t[-1]:.3f} s); {approach}")
         line, = figs["velocity"][1].plot(t, w, label=f"{case} {label}")
         figs["velocity"][1].axhline(u_exp, color=line.get_color(), ls=":",
                                     lw=1)

@@ -4,6 +4,7 @@
     scripts/validation/ten_cate_report.py [--series doc/validation/ten-cate.dat]
         [--figure doc/validation/ten-cate.png] [--min-gap 1]
         [--collect BUILD/tests/validation [--commit HASH]]
+    scripts/validation/ten_cate_report.py LABEL=RUN_SERIES ... --figure FIGURE
 
 reads SERIES (one row per step of E1-E4: case, time [s], settling velocity
 [m/s], gap h/d_p, kinetic energy of the particle and of the fluid [J]),
@@ -14,6 +15,10 @@ and draws
 FIGURE: the settling velocity against time and against the gap, with the
 experiment's u_max, and the kinetic energies against time (thesis Figs 6.6
 and 6.7).
+
+Given LABEL=RUN_SERIES arguments instead, it reads one run from each file
+as ten_cate.py --series wrote it (the case from its header), and the table
+and the figure name each run by its LABEL.
 
 --collect first writes SERIES from the files that `ctest -R
 validation_ten_cate` leaves in the given folder,
@@ -95,13 +100,33 @@ def read_series(path):
     return {case: tuple(np.array(rows).T) for case, rows in columns.items()}
 
 
+def read_run_series(arguments):
+    """{label: (case, (t, w, gap, particle energy, fluid energy))} of
+    LABEL=FILE arguments, each FILE a ten_cate.py --series file."""
+    runs = {}
+    for argument in arguments:
+        label, path = argument.rsplit("=", 1)
+        with open(path) as f:
+            header = f.readline()
+        words = header.split()
+        if len(words) < 4 or words[1:3] != ["ten", "Cate"]:
+            raise SystemExit(f"{path}: not a ten_cate.py --series file")
+        case = words[3].rstrip(",").lower()
+        runs[label] = (case, tuple(np.loadtxt(path, ndmin=2).T[:5]))
+    return runs
+
+
 def main():
     parser = argparse.ArgumentParser(
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("runs", nargs="*", metavar="LABEL=RUN_SERIES",
+                        help="runs to report instead of SERIES")
     parser.add_argument("--series", default="doc/validation/ten-cate.dat")
     parser.add_argument("--figure", default="doc/validation/ten-cate.png")
     parser.add_argument("--min-gap", type=float, default=1.)
+    parser.add_argument("--title", default="ten Cate E1-E4 as shipped",
+                        help="the figure's title")
     parser.add_argument("--collect", metavar="FOLDER", default=None,
                         help="write SERIES from FOLDER/ten-cate-<case>-series.dat "
                         "first")
@@ -111,27 +136,29 @@ def main():
     args = parser.parse_args()
     if args.collect:
         collect(args.collect, args.series, args.commit)
-    series = read_series(args.series)
+    if args.runs:
+        runs = read_run_series(args.runs)
+    else:
+        runs = {case.upper(): (case, columns)
+                for case, columns in read_series(args.series).items()}
 
     fig, (ax_t, ax_h, ax_e) = plt.subplots(1, 3, figsize=(15, 4))
-    print("| case | Re | u_max [m/s] | at t [s] | gap h/d_p there | "
+    print(f"| {'run' if args.runs else 'case'} | Re | u_max [m/s] | at t [s] | gap h/d_p there | "
           "experiment [m/s] | error | u_max/u_inf (experiment) | "
           "h/d_p = 1 at t [s] |")
     print("|---|---|---|---|---|---|---|---|---|")
-    for case, (re, u_exp) in EXPERIMENT.items():
-        if case not in series:
-            continue
-        t, w, gap, energy_p, energy_f = series[case]
+    for label, (case, (t, w, gap, energy_p, energy_f)) in runs.items():
+        re, u_exp = EXPERIMENT[case]
         window = np.nonzero(gap >= args.min_gap)[0]
         i = int(window[np.argmax(w[window])])
         error = 100 * (w[i] - u_exp) / u_exp
         u_inf, ratio_exp = UNBOUNDED[case]
         below = np.nonzero(gap <= 1.)[0]
         reached = f"{t[below[0]]:.3f}" if below.size else "not reached"
-        print(f"| {case.upper()} | {re} | {w[i]:.5f} | {t[i]:.3f} | "
+        print(f"| {label} | {re} | {w[i]:.5f} | {t[i]:.3f} | "
               f"{gap[i]:.2f} | {u_exp} | {error:+.2f} % | "
               f"{w[i] / u_inf:.3f} ({ratio_exp}) | {reached} |")
-        line, = ax_t.plot(t, w, label=f"{case.upper()}, Re = {re}")
+        line, = ax_t.plot(t, w, label=f"{label}, Re = {re}")
         ax_h.plot(gap, w, color=line.get_color())
         ax_e.semilogy(t[1:], energy_p[1:], color=line.get_color())
         ax_e.semilogy(t[1:], energy_f[1:], color=line.get_color(), ls="--")
@@ -147,7 +174,7 @@ def main():
     for ax in (ax_t, ax_h):
         ax.set_ylabel("settling velocity [m/s]")
         ax.grid(alpha=0.3)
-    fig.suptitle("ten Cate E1-E4 as shipped (dotted: the experiment's u_max; "
+    fig.suptitle(f"{args.title} (dotted: the experiment's u_max; "
                  f"dashed: h/d_p = {args.min_gap:g})", fontsize=10)
     ax_t.legend(fontsize=8)
     fig.tight_layout()
