@@ -22,9 +22,12 @@ ten_cate_report.py).
 Each run's line also gives the time the gap falls to one diameter, the
 first fresh adaptation of the carried mesh (mesh.dat's column
 'readapted') against the time of u_max, and the rebound: the largest rise
-of the settling velocity above its lowest value since u_max, in % of
-u_max (a sphere approaching a wall only slows down). --max-rebound
-PERCENT fails a run whose rebound exceeds it.
+of the settling velocity above its lowest value between u_max and the
+sphere's first stop (where the contact model halts it: the settling
+velocity below 1 % of u_max), in % of u_max (a sphere approaching a wall
+only slows down). After the first stop it gives the sphere's largest
+settling velocity and its gap at the end. --max-rebound PERCENT fails a
+run whose rebound exceeds it.
 """
 import argparse
 import os
@@ -52,36 +55,54 @@ def read_series(path):
     return names, np.loadtxt(path, ndmin=2)
 
 
-def first_fresh_adaptation(folder):
-    """The time of the carried mesh's first fresh adaptation, or None."""
+def fresh_adaptations(folder):
+    """The times of the carried mesh's fresh adaptations (none without a
+    mesh.dat)."""
     path = os.path.join(folder, "mesh.dat")
     if not os.path.exists(path):
-        return None
+        return np.array([])
     names, m = read_series(path)
     if "readapted" not in names:
-        return None
-    fresh = np.nonzero(m[:, names.index("readapted")] > 0)[0]
-    return m[fresh[0], 0] if fresh.size else None
+        return np.array([])
+    return m[m[:, names.index("readapted")] > 0, 0]
+
+
+def first_stop(w, peak):
+    """The index at which w first falls below 1 % of w[peak] after peak,
+    or None."""
+    stopped = np.nonzero(w[peak:] < 0.01 * w[peak])[0]
+    return peak + int(stopped[0]) if stopped.size else None
 
 
 def rebound(w, peak):
-    """The largest rise of w above its running minimum after index peak."""
-    after = w[peak:]
-    return float(np.max(after - np.minimum.accumulate(after)))
+    """The largest rise of w above its running minimum from index peak to
+    the first stop."""
+    stop = first_stop(w, peak)
+    approach = w[peak:stop]
+    return float(np.max(approach - np.minimum.accumulate(approach)))
 
 
 def describe_approach(t, w, gap, peak, fresh):
-    """The gap's h/d_p = 1 time, the first fresh adaptation against the
-    peak and the rebound, as one line's clauses."""
+    """The gap's h/d_p = 1 time, the fresh adaptations (times FRESH)
+    against the peak, the rebound and the first stop, as one line's
+    clauses."""
     below = np.nonzero(gap <= 1.)[0]
     reached = f"at {t[below[0]]:.3f} s" if below.size else "not reached"
-    if fresh is None:
+    if fresh.size == 0:
         adaptation = "no fresh adaptation"
     else:
-        order = "after" if fresh > t[peak] else "before"
-        adaptation = f"first fresh adaptation at t = {fresh:.3f} s ({order} u_max)"
+        adaptation = (f"first fresh adaptation at t = {fresh[0]:.3f} s, "
+                      f"{np.count_nonzero(fresh <= t[peak])} of {fresh.size} "
+                      "by u_max")
+    stop = first_stop(w, peak)
+    if stop is None:
+        stopped = "no stop"
+    else:
+        stopped = (f"first stop at t = {t[stop]:.3f} s, h/d_p = {gap[stop]:.3f}, "
+                   f"from {w[stop - 1]:.4f} m/s; then at most "
+                   f"{np.max(w[stop:]):.4f} m/s, h/d_p = {gap[-1]:.3f} at the end")
     return (f"h/d_p = 1 {reached}; {adaptation}; rebound "
-            f"{100 * rebound(w, peak) / w[peak]:.2f} % of u_max")
+            f"{100 * rebound(w, peak) / w[peak]:.2f} % of u_max; {stopped}")
 
 
 def identify(folder):
@@ -145,7 +166,7 @@ def main():
                 failures.append(f"{case} {label}: u_max error "
                                 f"{100 * error:+.2f} % beyond "
                                 f"{args.max_error} %")
-        approach = describe_approach(t, w, gap, i, first_fresh_adaptation(folder))
+        approach = describe_approach(t, w, gap, i, fresh_adaptations(folder))
         if (args.max_rebound is not None
                 and 100 * rebound(w, i) / w[i] > args.max_rebound):
             failures.append(f"{case} {label}: the velocity rises again by "

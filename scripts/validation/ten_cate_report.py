@@ -169,6 +169,9 @@ def main():
     ax_t.set_xlabel("time [s]")
     ax_e.set_xlabel("time [s]")
     ax_e.set_ylabel("kinetic energy [J] (solid: particle, dashed: fluid)")
+    # four decades below the largest energy: a sphere at rest on the floor
+    # keeps round-off energies of 1e-40 J
+    ax_e.set_ylim(bottom=1e-4 * max(np.max(columns[4]) for _, columns in runs.values()))
     ax_e.grid(alpha=0.3)
     ax_h.set_xlabel("gap h / d_p (falling towards the floor)")
     for ax in (ax_t, ax_h):
