@@ -167,11 +167,11 @@ def main():
                                 f"{100 * error:+.2f} % beyond "
                                 f"{args.max_error} %")
         approach = describe_approach(t, w, gap, i, fresh_adaptations(folder))
-        if (args.max_rebound is not None
-                and 100 * rebound(w, i) / w[i] > args.max_rebound):
+        rise = 100 * rebound(w, i) / w[i]
+        if args.max_rebound is not None and rise > args.max_rebound:
             failures.append(f"{case} {label}: the velocity rises again by "
-                            f"{100 * rebound(w, i) / w[i]:.2f} % of u_max "
-                            f"after its maximum, beyond {args.max_rebound} %")
+                            f"{rise:.2f} % of u_max after its maximum, "
+                            f"beyond {args.max_rebound} %")
         if args.series and k == 0:
             # the kinetic energies of the particle and of the fluid (the
             # whole box's, the images of a symmetric domain included)
