@@ -84,6 +84,15 @@ namespace particulate {
             "vertices' needs 'Method = laplace-alpha', the only method that "
             "puts vertices onto the surfaces. Set 'Method = laplace-alpha' "
             "or 'Moving bodies = re-adapt'.");
+      // Carrying the surface vertices moves the vertices of every level
+      // of the hierarchy onto the surfaces, and the multigrid's coarse
+      // levels may then no longer carry it (fbm_restart_matches_uninterrupted,
+      // a disk near the floor: FGMRES stalled with it, not with AMG).
+      auto &ruled_out = flow.fluid.linear_solver.multigrid_ruled_out_by;
+      if (ruled_out.empty()
+          && deformation.following
+               == deformation::DeformationParameters::Following::carry_surface)
+        ruled_out = "'Moving bodies = carry surface vertices'";
       // never ignore input silently
       using Type = core::SimulationParameters::Type;
       if (flow.simulation.type != Type::particulate_flow

@@ -546,8 +546,9 @@ namespace particulate {
 
       r.pcout << r.size_line(*r.flow) << "; " << particle_p.n_particles()
               << " particle(s); contact distance "
-              << r.world->parameters().contact_offset
-              << " m\nContainment: " << r.interface->containment_method()
+              << r.world->parameters().contact_offset << " m\nVelocity solver: "
+              << r.flow->velocity_solver_description()
+              << "\nContainment: " << r.interface->containment_method()
               << std::endl;
       warn_about_set_up();
     }

@@ -55,12 +55,14 @@ namespace particulate {
            {PressureLaplacianSmoother::chebyshev, "Chebyshev"}};
       const core::ChoiceNames<VelocityPreconditioner>
         velocity_preconditioner_names
-        = {{VelocityPreconditioner::amg, "AMG"},
+        = {{VelocityPreconditioner::automatic, "automatic"},
+           {VelocityPreconditioner::amg, "AMG"},
            {VelocityPreconditioner::chebyshev, "Chebyshev"},
            {VelocityPreconditioner::geometric_multigrid,
             "geometric multigrid"}};
       const core::ChoiceNames<VelocityOperator> velocity_operator_names
-        = {{VelocityOperator::assembled, "assembled"},
+        = {{VelocityOperator::automatic, "automatic"},
+           {VelocityOperator::assembled, "assembled"},
            {VelocityOperator::matrix_free, "matrix-free"}};
       const core::ChoiceNames<MultigridCoarseSolver> coarse_solver_names
         = {{MultigridCoarseSolver::automatic, "automatic"},
@@ -465,7 +467,11 @@ namespace particulate {
         to_string(defaults.velocity_preconditioner),
         Patterns::Selection(core::selection_of(velocity_preconditioner_names)),
         "Approximate inverse of the velocity block inside the block "
-        "preconditioner. AMG: one V-cycle of Trilinos ML, robust for any "
+        "preconditioner. automatic: for time-dependent flow the geometric "
+        "multigrid where the mesh allows it, AMG otherwise, for steady flow "
+        "and with 'Moving bodies = carry surface vertices'; the run's log "
+        "says which and why. "
+        "AMG: one V-cycle of Trilinos ML, robust for any "
         "time step, but its set-up costs many Krylov iterations. Chebyshev: "
         "a Jacobi-preconditioned Chebyshev polynomial of degree 'Chebyshev "
         "degree' with eigenvalue bounds estimated by a few CG steps; no "
@@ -486,13 +492,15 @@ namespace particulate {
         to_string(defaults.velocity_operator),
         Patterns::Selection(core::selection_of(velocity_operator_names)),
         "How the outer FGMRES applies the velocity block of the Newton "
-        "system. assembled: a Trilinos matrix, assembled at every Newton "
+        "system. automatic: matrix-free with the geometric multigrid, "
+        "assembled with the other preconditioners. "
+        "assembled: a Trilinos matrix, assembled at every Newton "
         "step. matrix-free: a cell loop with sum factorisation on the "
         "current iterate (mass, deformation-tensor viscosity, Oseen "
         "convection with the ALE mesh velocity, and the Newton term), no "
         "Jacobian assembly and no velocity-block matrix in memory; the "
         "divergence blocks stay assembled (they change only with the mesh). "
-        "Needs 'Velocity preconditioner = geometric multigrid' (the other "
+        "Needs the geometric multigrid velocity preconditioner (the other "
         "preconditioners are built from the assembled block) and "
         "constraints of the form u_i = g only (no hanging nodes, free-slip "
         "planes normal to an axis).");
@@ -610,7 +618,8 @@ namespace particulate {
                                              prm.get("Velocity operator"));
       if (velocity_operator == VelocityOperator::matrix_free
           && velocity_preconditioner
-               != VelocityPreconditioner::geometric_multigrid)
+               != VelocityPreconditioner::geometric_multigrid
+          && velocity_preconditioner != VelocityPreconditioner::automatic)
         throw std::runtime_error(
           "subsection 'Linear solver': 'Velocity operator = matrix-free' "
           "needs 'Velocity preconditioner = geometric multigrid' (it is '"

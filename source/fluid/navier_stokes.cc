@@ -10,12 +10,30 @@ namespace particulate {
   namespace fluid {
     using namespace dealii;
 
+    namespace {
+      /** @p requested with the velocity solver of @p choice. */
+      FluidParameters
+      with_velocity_solver(const FluidParameters      &requested,
+                           const VelocitySolverChoice &choice)
+      {
+        FluidParameters resolved                       = requested;
+        resolved.linear_solver.velocity_preconditioner = choice.preconditioner;
+        resolved.linear_solver.velocity_operator = choice.velocity_operator;
+        return resolved;
+      }
+    } // namespace
+
+
+
     template <int dim>
     NavierStokes<dim>::NavierStokes(
-      const FluidParameters                          &parameters,
+      const FluidParameters                          &requested,
       parallel::fullydistributed::Triangulation<dim> &tria,
       TimerOutput                                    &timer)
-      : parameters(parameters)
+      : velocity_solver(resolve_velocity_solver(requested.linear_solver,
+                                                requested.boundary_conditions,
+                                                tria))
+      , parameters(with_velocity_solver(requested, velocity_solver))
       , pcout(std::cout,
               Utilities::MPI::this_mpi_process(tria.get_communicator()) == 0)
       , solver_log(std::cout,

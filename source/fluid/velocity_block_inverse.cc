@@ -75,6 +75,8 @@ namespace particulate {
               communicator,
               linear.multigrid_on_moving_mesh,
               log);
+          case VelocityPreconditioner::automatic:
+            break; // NavierStokes makes the choice before this
         }
       AssertThrow(false, ExcInternalError());
       return nullptr;

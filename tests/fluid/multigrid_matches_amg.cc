@@ -37,6 +37,10 @@ main(int argc, char **argv)
   const std::string multigrid
     = "subsection Linear solver\n"
       " set Velocity preconditioner = geometric multigrid\nend\n";
+  // AMG by name: the default ('automatic') takes the multigrid here
+  const std::string amg_preconditioner
+    = "subsection Linear solver\n"
+      " set Velocity preconditioner = AMG\nend\n";
 
   {
     const std::string tight = "subsection Mesh\n set Refinements = 1\nend\n"
@@ -49,7 +53,7 @@ main(int argc, char **argv)
     fluid::FlowRunSummary with_amg;
     if (rank == 0)
       with_amg = testing::run_library_case("dfg-2d-2",
-                                           tight,
+                                           tight + amg_preconditioner,
                                            MPI_COMM_SELF,
                                            "multigrid_amg_run");
     if (rank == 0)
@@ -105,10 +109,11 @@ main(int argc, char **argv)
         " set Relative tolerance = 1e-12\nend\n"
         "subsection Linear solver\n set Relative tolerance = 1e-8\n"
         " set Pressure Poisson tolerance = 1e-8\nend\n";
-    const auto amg = testing::run_library_case("dfg-2d-2",
-                                               half_channel,
-                                               MPI_COMM_WORLD,
-                                               "multigrid_half_channel_amg");
+    const auto amg
+      = testing::run_library_case("dfg-2d-2",
+                                  half_channel + amg_preconditioner,
+                                  MPI_COMM_WORLD,
+                                  "multigrid_half_channel_amg");
     const auto with_multigrid
       = testing::run_library_case("dfg-2d-2",
                                   half_channel + multigrid,

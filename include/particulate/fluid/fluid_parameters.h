@@ -50,17 +50,21 @@ namespace particulate {
     };
 
     /** 'Velocity preconditioner': the approximate inverse of the velocity
-     *  block. */
+     *  block. `automatic` becomes a concrete choice once the mesh exists
+     *  (resolve_velocity_solver()). */
     enum class VelocityPreconditioner
     {
+      automatic,
       amg,
       chebyshev,
       geometric_multigrid
     };
 
-    /** 'Velocity operator': how FGMRES applies the velocity block. */
+    /** 'Velocity operator': how FGMRES applies the velocity block;
+     *  `automatic` as for VelocityPreconditioner. */
     enum class VelocityOperator
     {
+      automatic,
       assembled,
       matrix_free
     };
@@ -210,16 +214,20 @@ namespace particulate {
       PressureLaplacianSmoother pressure_laplacian_smoother
         = PressureLaplacianSmoother::ilu;
       VelocityPreconditioner velocity_preconditioner
-        = VelocityPreconditioner::amg;
+        = VelocityPreconditioner::automatic;
       unsigned int chebyshev_degree = 4;
       /// the velocity block of the outer FGMRES operator
-      VelocityOperator velocity_operator = VelocityOperator::assembled;
+      VelocityOperator velocity_operator = VelocityOperator::automatic;
       /// coarse solve of the velocity V-cycle
       MultigridCoarseSolver multigrid_coarse_solver
         = MultigridCoarseSolver::automatic;
       /// the velocity V-cycle after a mesh motion
       MultigridOnMovingMesh multigrid_on_moving_mesh
         = MultigridOnMovingMesh::keep;
+      /// why the case, not the mesh, rules the geometric multigrid out
+      /// for 'automatic' (e.g. "steady flow"; empty: it does not); set
+      /// where the case is read, never an entry of its own
+      std::string  multigrid_ruled_out_by;
       bool         amg_elliptic        = true;
       AmgSmoother  amg_smoother        = AmgSmoother::ilu;
       unsigned int amg_smoother_sweeps = 2;

@@ -6,6 +6,7 @@
 #include <particulate/fluid/fluid_parameters.h>
 #include <particulate/fluid/run_profile.h>
 #include <particulate/fluid/time_integrator.h>
+#include <particulate/fluid/velocity_solver_choice.h>
 #include <particulate/fluid/viscosity_model.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -58,7 +59,9 @@ namespace particulate {
     public:
       using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
 
-      NavierStokes(const FluidParameters &parameters,
+      /** Keeps a copy of @p requested with its automatic choices made for
+       *  @p tria (resolve_velocity_solver()). */
+      NavierStokes(const FluidParameters &requested,
                    dealii::parallel::fullydistributed::Triangulation<dim> &tria,
                    dealii::TimerOutput &timer);
       ~NavierStokes();
@@ -282,10 +285,19 @@ namespace particulate {
       {
         return discretisation.get_viscosity_model();
       }
+      /** The parameters the solver runs with: the requested ones with
+       *  their automatic choices made. */
       const FluidParameters &
       get_parameters() const
       {
         return parameters;
+      }
+      /** The velocity preconditioner and operator in use, and whether they
+       *  were chosen automatically, for the run's log. */
+      const std::string &
+      velocity_solver_description() const
+      {
+        return velocity_solver.description;
       }
       /** Pockets of fluid that the covered nodes and walls enclose, apart
        *  from the flow: each has the pressure of one cell decoupled, whose
@@ -339,7 +351,9 @@ namespace particulate {
 
       using Target = typename FlowDiscretisation<dim>::AssemblyTarget;
 
-      const FluidParameters     &parameters;
+      /// what the automatic velocity solver choices became on this mesh
+      const VelocitySolverChoice velocity_solver;
+      const FluidParameters      parameters;
       dealii::ConditionalOStream pcout;
       /// rank 0 with 'Verbose': the linear solver's decisions
       dealii::ConditionalOStream solver_log;
