@@ -5,11 +5,12 @@
 # figures and table into output/fig-ten-cate-<case>/).
 #   scripts/validation/ten_cate_levels.sh e4 0 1
 # COVERED_NODES=nearest runs them with 'Covered nodes = nearest' (subsection
-# Particles) into output/ten-cate-<case>-r<level>-nearest/. FIGURES=<dir>
+# Particles) into output/ten-cate-<case>-r<level>-nearest/; TIME_STEP=<s> with
+# that 'Time step' (subsection Time) into ...-dt<s>/. FIGURES=<dir>
 # puts the figures and table there instead. EXTRA_PRM is
 # appended to each case file (printf %b: '\n' for new lines), TAG to the
 # folder names and labels, e.g.
-#   EXTRA_PRM='subsection Time\n set Time step = 0.0025\nend\n' TAG=dt2.5ms
+#   EXTRA_PRM='subsection Particles\n set Force integral = stress\nend\n' TAG=stress
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 case_name="$1"; shift
@@ -17,13 +18,16 @@ base="prm/ten-cate/ten-cate-${case_name}.prm"
 [[ -f "$base" ]] || { echo "no case file $base" >&2; exit 1; }
 folders=(); labels=()
 for level in "$@"; do
-  out="output/ten-cate-${case_name}-r${level}${COVERED_NODES:+-$COVERED_NODES}${TAG:+-$TAG}"
+  out="output/ten-cate-${case_name}-r${level}${COVERED_NODES:+-$COVERED_NODES}${TIME_STEP:+-dt$TIME_STEP}${TAG:+-$TAG}"
   extra="${EXTRA_PRM:-}"
+  if [[ -n "${TIME_STEP:-}" ]]; then
+    extra="subsection Time\n  set Time step = ${TIME_STEP}\nend\n${extra}"
+  fi
   if [[ -n "${COVERED_NODES:-}" ]]; then
     extra="subsection Particles\n  set Covered nodes = ${COVERED_NODES}\nend\n${extra}"
   fi
   scripts/validation/run_case_at_level.sh "$base" "$level" "$out" "$extra" || true
-  folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}${TAG:+, $TAG}")
+  folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}${TIME_STEP:+, dt $TIME_STEP s}${TAG:+, $TAG}")
 done
 /usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}" \
   --doc "${FIGURES:-output/fig-ten-cate-${case_name}}"
