@@ -5,7 +5,7 @@
 # AMG'. Prints one markdown row per case: the wall times of the two runs and
 # the last row of each run's particle_0.dat (flow.dat for a fluid run):
 #   scripts/experiments/velocity_solver_defaults.sh [build/particulate]
-# About 20 min; run it alone on the machine, the rows are wall times.
+# About 14 min; run it alone on the machine, the rows are wall times.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 exe="$(realpath "${1:-$root/build/particulate}")"
