@@ -4,6 +4,7 @@
 // clang-format on
 
 #include <particulate/fluid/velocity_multigrid.h>
+#include <particulate/fluid/velocity_solver_choice.h>
 
 #include <deal.II/base/mg_level_object.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -379,33 +380,24 @@ namespace particulate {
                     const bool is_dirichlet     = dirichlet.count(id) > 0;
                     if (!is_dirichlet && free_slip.count(id) == 0)
                       continue;
-                    unsigned int normal_component = dim;
-                    if (!is_dirichlet)
+                    // the component along the plane's normal; the level
+                    // rows can only fix whole components
+                    const unsigned int normal_component
+                      = is_dirichlet ? dim :
+                                       axis_along_normal<dim>(cell->face(f));
+                    if (!is_dirichlet && normal_component == dim)
                       {
-                        // the component along the plane's normal; the
-                        // level rows can only fix whole components
-                        const Tensor<1, dim> normal
-                          = cell->face(f)->get_manifold().normal_vector(
-                            cell->face(f),
-                            cell->face(f)->center());
-                        for (unsigned int d = 0; d < dim; ++d)
-                          if (std::abs(normal[d])
-                              >= (1. - 1e-10) * normal.norm())
-                            normal_component = d;
-                        if (normal_component == dim)
-                          {
-                            std::ostringstream message;
-                            message << "The geometric multigrid velocity "
-                                       "preconditioner supports free-slip "
-                                       "boundaries only on planes normal to a "
-                                       "coordinate axis; boundary id "
-                                    << id << " is not (the face at "
-                                    << cell->face(f)->center() << " on level "
-                                    << level << " has the normal " << normal
-                                    << "). Use 'Velocity preconditioner = "
-                                       "AMG' in subsection 'Linear solver'.";
-                            throw std::runtime_error(message.str());
-                          }
+                        std::ostringstream message;
+                        message << "The geometric multigrid velocity "
+                                   "preconditioner supports free-slip "
+                                   "boundaries only on planes normal to a "
+                                   "coordinate axis; boundary id "
+                                << id << " is not (the face at "
+                                << cell->face(f)->center() << " on level "
+                                << level
+                                << "). Use 'Velocity preconditioner = "
+                                   "AMG' in subsection 'Linear solver'.";
+                        throw std::runtime_error(message.str());
                       }
                     cell->face(f)->get_mg_dof_indices(level, face_dofs);
                     for (unsigned int i = 0; i < face_dofs.size(); ++i)

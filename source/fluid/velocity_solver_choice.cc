@@ -15,22 +15,6 @@ namespace particulate {
     using namespace dealii;
 
     namespace {
-      /** True when the face lies in a plane normal to a coordinate axis,
-       *  the only free-slip boundary whose constraint u_n = 0 fixes one
-       *  whole velocity component (what the multigrid levels can hold). */
-      template <int dim>
-      bool
-      normal_along_an_axis(
-        const typename Triangulation<dim>::face_iterator &face)
-      {
-        const Tensor<1, dim> normal
-          = face->get_manifold().normal_vector(face, face->center());
-        for (unsigned int d = 0; d < dim; ++d)
-          if (std::abs(normal[d]) >= (1. - 1e-10) * normal.norm())
-            return true;
-        return false;
-      }
-
       /** The lowest free-slip boundary id with a face off the axis planes
        *  on this rank, or -1. Looks at the cells of every level this rank
        *  knows, as the multigrid's level constraints do. */
@@ -46,8 +30,9 @@ namespace particulate {
               if (face->at_boundary()
                   && std::count(free_slip.begin(),
                                 free_slip.end(),
-                                face->boundary_id()) > 0
-                  && !normal_along_an_axis<dim>(face))
+                                face->boundary_id())
+                       > 0
+                  && axis_along_normal<dim>(face) == dim)
                 {
                   const int id = static_cast<int>(face->boundary_id());
                   found        = found < 0 ? id : std::min(found, id);
@@ -55,6 +40,20 @@ namespace particulate {
         return found;
       }
     } // namespace
+
+
+
+    template <int dim>
+    unsigned int
+    axis_along_normal(const typename Triangulation<dim>::face_iterator &face)
+    {
+      const Tensor<1, dim> normal
+        = face->get_manifold().normal_vector(face, face->center());
+      for (unsigned int d = 0; d < dim; ++d)
+        if (std::abs(normal[d]) >= (1. - 1e-10) * normal.norm())
+          return d;
+      return dim;
+    }
 
 
 
@@ -87,7 +86,7 @@ namespace particulate {
       VelocitySolverChoice choice{requested.velocity_preconditioner,
                                   requested.velocity_operator,
                                   ""};
-      std::string note;
+      std::string          note;
       if (choice.preconditioner == VelocityPreconditioner::automatic)
         {
           const bool matrix_free_asked
@@ -119,13 +118,17 @@ namespace particulate {
               VelocityOperator::matrix_free :
               VelocityOperator::assembled;
       choice.description = to_string(choice.preconditioner) + ", "
-                           + to_string(choice.velocity_operator)
-                           + " operator" + note;
+                           + to_string(choice.velocity_operator) + " operator"
+                           + note;
       return choice;
     }
 
 
 
+    template unsigned int
+    axis_along_normal<2>(const Triangulation<2>::face_iterator &);
+    template unsigned int
+    axis_along_normal<3>(const Triangulation<3>::face_iterator &);
     template std::string
     geometric_multigrid_obstacle(const Triangulation<2> &,
                                  const BoundaryConditions &);

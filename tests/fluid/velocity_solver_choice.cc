@@ -52,12 +52,12 @@ namespace {
   }
 
   void
-  check_choice(testing::Checker             &checker,
-               const VelocitySolverChoice   &choice,
-               const VelocityPreconditioner  preconditioner,
-               const VelocityOperator        velocity_operator,
-               const std::string            &phrase,
-               const std::string            &what)
+  check_choice(testing::Checker            &checker,
+               const VelocitySolverChoice  &choice,
+               const VelocityPreconditioner preconditioner,
+               const VelocityOperator       velocity_operator,
+               const std::string           &phrase,
+               const std::string           &what)
   {
     std::cout << what << ": " << choice.description << std::endl;
     checker.check(choice.preconditioner == preconditioner
@@ -148,7 +148,7 @@ main(int argc, char **argv)
                  VelocityOperator::assembled,
                  "hanging nodes",
                  "box with hanging nodes");
-    LinearSolverParameters chebyshev = automatic;
+    LinearSolverParameters chebyshev  = automatic;
     chebyshev.velocity_preconditioner = VelocityPreconditioner::chebyshev;
     check_choice(checker,
                  resolve_velocity_solver(chebyshev, free_slip_on({}), box),

@@ -23,6 +23,18 @@ namespace particulate {
     };
 
     /**
+     * The coordinate axis that the normal of the boundary face @p face
+     * points along, or dim where it points along none. The multigrid's
+     * level rows can hold a free-slip constraint u.n = 0 only where it
+     * fixes one whole velocity component, that is on planes normal to an
+     * axis.
+     */
+    template <int dim>
+    unsigned int
+    axis_along_normal(
+      const typename dealii::Triangulation<dim>::face_iterator &face);
+
+    /**
      * Why the geometric multigrid velocity preconditioner (and with it the
      * matrix-free operator) cannot run on @p tria with @p conditions, in a
      * phrase such as "the free-slip boundary 3 is not a plane normal to a
