@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plot columns of a Particulate time series (.dat with a '# name name ...'
 header) against time and save a PNG.
 

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Table and figure of the geometry-resolution study (thesis §6.6).
 
 Usage:

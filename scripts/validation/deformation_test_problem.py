@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Tables and figures of the grid-deformation test problem (thesis §5.6).
 
 Usage:

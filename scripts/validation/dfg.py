@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """DFG flow-around-a-cylinder benchmarks (Schaefer & Turek 1996): plots for
 doc/validation/dfg.md from the validation tests' output.
 

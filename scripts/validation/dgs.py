@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The DGS sedimentation (thesis §6.7.1): a bed of spheres that sinks
 through the liquid of a closed box, and the liquid it displaces, which
 rises through the bed and lifts particles again before they settle.

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Drafting, kissing and tumbling of two disks (prm/dkt/dkt.prm): find the
 three events in a run's particle series and plot the run.
 

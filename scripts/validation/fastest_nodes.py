@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Where a run's flow is fastest: per flow snapshot, the fastest velocity
 node, its speed, its distance from the column's axis, and the pressure range.
 

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The liquid-fluidized bed after Aguilar-Corona et al. (thesis §6.7.2):
 spheres in a vertical column, lifted by a uniform upward flow, against the
 Richardson-Zaki correlation.

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The solver iterations of every step of a particulate-flow run, checked.
 
     scripts/validation/iteration_counts.py OUTPUT [--label NAME]

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plot Jeffery-orbit runs against the closed form from the small series
 that scripts/jeffery_orbit.py --series writes (time, phi, phi_jeffery).
 

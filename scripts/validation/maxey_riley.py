@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The settling velocity of a sphere released from rest in an unbounded
 fluid at rest, by the Maxey-Riley equation with Schiller-Naumann drag: the
 reference for the first instants of a settling run, before walls and floor

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plot a settling run of many bodies from the small series that
 scripts/mixed_set.py --series writes (time, total kinetic energy, height of
 every body; the header names the bodies' shapes).

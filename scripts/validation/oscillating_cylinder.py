@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Drag and lift of the oscillating cylinder (thesis §6.3) from several runs.
 
 Usage:

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Check the steady pressure drop of runs against a closed form.
 
     scripts/validation/pressure_drop.py FOLDER... --expect G --max-error P

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Check that the disks or spheres of a particulate-flow run settled into a
 pile at rest, without ever overlapping each other or the walls.
 

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Vortex shedding behind the cylinder of the DFG channel at Re = 100
 (prm/cylinder-in-channel): the Strouhal number of the lift's oscillation
 against the DFG 2D-2 benchmark's (Schaefer & Turek 1996: St = 0.2950 ..

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """How finely a mesh resolves a sphere: the cells that its surface cuts.
 
 Reads the first ParaView snapshot of each run folder (flow_00000.*.vtu, all

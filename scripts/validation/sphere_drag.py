@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Drag of ten Cate E4's sphere held fixed in a uniform stream
 (prm/sphere-drag/fixed-sphere.prm) and translating through fluid at rest
 (moving-sphere.prm, moving-sphere-carried.prm), from the output folders of

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """ten Cate et al. (2002) sedimentation benchmark: compare runs of
 prm/ten-cate/ten-cate-e*.prm with the experiment and plot them.
 

@@ -67,6 +67,6 @@ for covered in "" nearest; do
       labels+=("r=0 + Laplace-kappa, $sweeps sweeps${covered:+, $covered}")
     done
   done
-  /usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" \
+  /usr/bin/python3 scripts/validation/ten_cate.py "${folders[@]}" \
     --label "${labels[@]}" --doc "output/fig-ten-cate-${case_name}-kappa${suffix}"
 done

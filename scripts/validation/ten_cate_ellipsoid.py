@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plot a settling spheroid from the series that scripts/ten_cate_ellipsoid.py
 --series writes (time, tilt, settling speed, horizontal velocity, x, z).
 

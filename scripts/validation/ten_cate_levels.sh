@@ -29,5 +29,5 @@ for level in "$@"; do
   scripts/validation/run_case_at_level.sh "$base" "$level" "$out" "$extra" || true
   folders+=("$out"); labels+=("r=${level}, $((3 << level)) cells/D${COVERED_NODES:+, $COVERED_NODES}${TIME_STEP:+, dt $TIME_STEP s}${TAG:+, $TAG}")
 done
-/usr/bin/env python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}" \
+/usr/bin/python3 scripts/validation/ten_cate.py "${folders[@]}" --label "${labels[@]}" \
   --doc "${FIGURES:-output/fig-ten-cate-${case_name}}"
