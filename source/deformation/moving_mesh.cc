@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <istream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace particulate {
@@ -123,6 +124,8 @@ namespace particulate {
       fresh_start.clear();
       const std::vector<Point<dim>> before = mesh.get_vertices();
       const auto                    moved  = [&](DeformationReport report) {
+        if (report.quality.min_scaled_jacobian <= 0.)
+          refuse_inverted_mesh(before, report.quality.min_scaled_jacobian);
         for (unsigned int v = 0; v < before.size(); ++v)
           report.max_vertex_move
             = std::max(report.max_vertex_move,
@@ -143,38 +146,33 @@ namespace particulate {
               .carry(mesh, undeformed, distance, body_displacement, carried) :
             carry_neighbourhood(distance, body_displacement);
       const bool lost_surface_vertices = carried != on_surface;
-      if (!lost_surface_vertices
-          && report.quality.min_scaled_jacobian
-               >= std::min(readaptation_quality, fresh_min_quality)
-          && report.quality.max_aspect_ratio
-               <= std::max(readaptation_aspect_ratio, fresh_max_aspect_ratio))
+      if (!lost_surface_vertices && keeps_quality(report))
         return moved(report);
       // the carried mesh has run out of room: start afresh
       if (following == DeformationParameters::Following::carry_neighbourhood
           && !method)
         {
-          // from the undeformed mesh, each body's zone carried back to
-          // where its vertices were wherever the mesh repeats itself there
-          // (carried_zone_realignment.h): where the step starts when that
-          // is known, then carried over the step
-          if (previous)
-            VertexHierarchy<dim>::write_positions(mesh, before);
-          const DistanceField<dim> &at    = previous ? *previous : distance;
-          const auto                zones = realigned_zones(mesh.get_vertices(),
-                                             undeformed,
-                                             at,
-                                             carried_zone_width);
-          VertexHierarchy<dim>::write_positions(mesh, undeformed);
-          auto fresh        = carry_neighbourhood(at, [&](const Point<dim> &x) {
-            return residual_near(zones, x);
-          });
-          fresh_min_quality = fresh.quality.min_scaled_jacobian;
-          fresh_max_aspect_ratio = fresh.quality.max_aspect_ratio;
+          const std::vector<Point<dim>> carried_now = mesh.get_vertices();
+          DeformationReport             fresh;
           if (previous)
             {
+              // where the step starts, then carried over the step; unless
+              // that carry alone bends a cell below `Re-adaptation
+              // quality` (a body moving about a cell per step towards a
+              // wall): then the fresh start is made where the bodies are
+              // now
+              restart_carried_zones(before, *previous);
               fresh_start = mesh.get_vertices();
               fresh       = carry_neighbourhood(distance, body_displacement);
+              const double worst = fresh.quality.min_scaled_jacobian;
+              if (worst < readaptation_quality || worst <= 0.)
+                {
+                  fresh_start.clear();
+                  fresh = restart_carried_zones(carried_now, distance);
+                }
             }
+          else
+            fresh = restart_carried_zones(carried_now, distance);
           fresh.readapted = true;
           return moved(fresh);
         }
@@ -182,6 +180,63 @@ namespace particulate {
       auto fresh      = adapt(distance);
       fresh.readapted = true;
       return moved(fresh);
+    }
+
+
+
+    template <int dim>
+    void
+    MovingMesh<dim>::refuse_inverted_mesh(const std::vector<Point<dim>> &before,
+                                          const double min_scaled_jacobian)
+    {
+      VertexHierarchy<dim>::write_positions(mesh, before);
+      fresh_start.clear();
+      std::ostringstream message;
+      message << "Moving the mesh with the bodies inverts a cell (smallest "
+                 "scaled Jacobian "
+              << min_scaled_jacobian
+              << "): a body moves too far in one step for the cells between "
+                 "it and a wall or another body. Reduce 'Time step' in "
+                 "subsection 'Time'.";
+      throw DeformationError(message.str());
+    }
+
+
+
+    template <int dim>
+    bool
+    MovingMesh<dim>::keeps_quality(const DeformationReport &report) const
+    {
+      return report.quality.min_scaled_jacobian
+               >= std::min(readaptation_quality, fresh_min_quality)
+             && report.quality.max_aspect_ratio
+                  <= std::max(readaptation_aspect_ratio,
+                              fresh_max_aspect_ratio);
+    }
+
+
+
+    template <int dim>
+    DeformationReport
+    MovingMesh<dim>::restart_carried_zones(
+      const std::vector<Point<dim>> &carried_positions,
+      const DistanceField<dim>      &at)
+    {
+      // from the undeformed mesh, each body's zone carried back to where
+      // its vertices were wherever the mesh repeats itself there
+      // (carried_zone_realignment.h)
+      VertexHierarchy<dim>::write_positions(mesh, carried_positions);
+      const auto zones = realigned_zones(mesh.get_vertices(),
+                                         undeformed,
+                                         at,
+                                         carried_zone_width);
+      VertexHierarchy<dim>::write_positions(mesh, undeformed);
+      auto fresh        = carry_neighbourhood(at, [&](const Point<dim> &x) {
+        return residual_near(zones, x);
+      });
+      fresh_min_quality = fresh.quality.min_scaled_jacobian;
+      fresh_max_aspect_ratio = fresh.quality.max_aspect_ratio;
+      return fresh;
     }
 
 

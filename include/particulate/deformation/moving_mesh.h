@@ -69,14 +69,18 @@ namespace particulate {
        * that leaves a cell worse than `Re-adaptation quality` or
        * `Re-adaptation aspect ratio` (and than the last fresh adaptation's
        * worst cell), or a surface vertex could not follow. Throws
-       * DeformationError (mesh unchanged) when a fresh adaptation is refused.
+       * DeformationError (mesh unchanged) when a fresh adaptation is refused
+       * or the move would leave a cell inverted.
        *
        * With `carry neighbourhood`, no method and @p previous (the bodies
        * where the step starts, where the mesh was carried to before), a
        * fresh start is made there and then carried over the step like any
        * other: fresh_start_vertices() holds the fresh mesh, onto which the
        * flow is carried before the step's ALE motion, so that the covered
-       * nodes move with their body in this step too.
+       * nodes move with their body in this step too. When that carry alone
+       * bends a cell below `Re-adaptation quality`, the fresh start is
+       * made where the bodies are now instead (fresh_start_vertices()
+       * empty).
        */
       DeformationReport
       follow(
@@ -155,6 +159,22 @@ namespace particulate {
         const DistanceField<dim> &distance,
         const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
           &body_displacement);
+      /** Put the vertices back at @p before and throw DeformationError:
+       *  a move left a cell inverted (@p min_scaled_jacobian <= 0). */
+      [[noreturn]] void
+      refuse_inverted_mesh(const std::vector<dealii::Point<dim>> &before,
+                           const double min_scaled_jacobian);
+      /** Whether a carried mesh stays within `Re-adaptation quality` and
+       *  `Re-adaptation aspect ratio` (or the last fresh start's worst). */
+      bool
+      keeps_quality(const DeformationReport &report) const;
+      /** `carry neighbourhood`'s fresh start about the bodies @p at: the
+       *  undeformed mesh, each body's zone realigned to where it lies on
+       *  the carried mesh @p carried_positions. */
+      DeformationReport
+      restart_carried_zones(
+        const std::vector<dealii::Point<dim>> &carried_positions,
+        const DistanceField<dim>              &at);
 
       dealii::Triangulation<dim>            mesh;
       std::unique_ptr<MeshDeformation<dim>> method;
