@@ -204,10 +204,12 @@ namespace particulate {
 
     template <int dim>
     std::vector<RealignedZone<dim>>
-    realigned_zones(const std::vector<Point<dim>> &carried,
-                    const std::vector<Point<dim>> &undeformed,
-                    const DistanceField<dim>      &distance,
-                    const double                   zone_width)
+    realigned_zones(
+      const std::vector<Point<dim>>                           &carried,
+      const std::vector<Point<dim>>                           &undeformed,
+      const DistanceField<dim>                                &distance,
+      const double                                             zone_width,
+      const std::function<Tensor<1, dim>(const Point<dim> &)> &step)
     {
       const double tolerance = 1e-9 * bounding_diagonal(undeformed);
       const auto   groups
@@ -233,13 +235,16 @@ namespace particulate {
       std::vector<RealignedZone<dim>> zones;
       for (const auto &g : groups)
         {
-          const Point<dim> &u = undeformed[g.vertices[0]];
-          // the lattice translation nearest to the displacement: the one
-          // that takes the vertex to its nearest undeformed neighbour
-          const Tensor<1, dim> shift
-            = undeformed[nearest_vertex(undeformed, u + g.displacement)] - u;
+          const Point<dim>  &u = undeformed[g.vertices[0]];
           RealignedZone<dim> zone;
           zone.centre = g.centre(carried);
+          // the lattice translation nearest to the displacement at the end
+          // of the step: the one that takes the vertex, so carried, to its
+          // nearest undeformed neighbour
+          const Tensor<1, dim> ahead
+            = g.displacement + (step ? step(zone.centre) : Tensor<1, dim>());
+          const Tensor<1, dim> shift
+            = undeformed[nearest_vertex(undeformed, u + ahead)] - u;
           if (repeats_under(shift,
                             g.displacement,
                             undeformed,
@@ -276,12 +281,14 @@ namespace particulate {
     realigned_zones(const std::vector<Point<2>> &,
                     const std::vector<Point<2>> &,
                     const DistanceField<2> &,
-                    double);
+                    double,
+                    const std::function<Tensor<1, 2>(const Point<2> &)> &);
     template std::vector<RealignedZone<3>>
     realigned_zones(const std::vector<Point<3>> &,
                     const std::vector<Point<3>> &,
                     const DistanceField<3> &,
-                    double);
+                    double,
+                    const std::function<Tensor<1, 3>(const Point<3> &)> &);
     template Tensor<1, 2>
     residual_near(const std::vector<RealignedZone<2>> &, const Point<2> &);
     template Tensor<1, 3>

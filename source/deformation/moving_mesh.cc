@@ -161,7 +161,7 @@ namespace particulate {
               // quality` (a body moving about a cell per step towards a
               // wall): then the fresh start is made where the bodies are
               // now
-              restart_carried_zones(before, *previous);
+              restart_carried_zones(before, *previous, body_displacement);
               fresh_start = mesh.get_vertices();
               fresh       = carry_neighbourhood(distance, body_displacement);
               const double worst = fresh.quality.min_scaled_jacobian;
@@ -220,7 +220,8 @@ namespace particulate {
     DeformationReport
     MovingMesh<dim>::restart_carried_zones(
       const std::vector<Point<dim>> &carried_positions,
-      const DistanceField<dim>      &at)
+      const DistanceField<dim>      &at,
+      const std::function<Tensor<1, dim>(const Point<dim> &)> &step)
     {
       // from the undeformed mesh, each body's zone carried back to where
       // its vertices were wherever the mesh repeats itself there
@@ -229,7 +230,8 @@ namespace particulate {
       const auto zones = realigned_zones(mesh.get_vertices(),
                                          undeformed,
                                          at,
-                                         carried_zone_width);
+                                         carried_zone_width,
+                                         step);
       VertexHierarchy<dim>::write_positions(mesh, undeformed);
       auto fresh        = carry_neighbourhood(at, [&](const Point<dim> &x) {
         return residual_near(zones, x);

@@ -959,16 +959,38 @@ namespace particulate {
         return;
       deformation::DeformationReport report;
       {
-        TimerOutput::Scope          scope(r.timer, "mesh deformation");
-        std::vector<geometry::Pose> poses;
-        for (const auto id : r.ids)
-          poses.emplace_back(r.world->body(id).orientation,
-                             r.world->body(id).position);
-        report = r.adapted_mesh->follow(poses, *r.flow, k);
+        TimerOutput::Scope scope(r.timer, "mesh deformation");
+        report = r.adapted_mesh->follow(poses_marked_over_step(k), *r.flow, k);
       }
       r.output.record_mesh(t_new, report);
       TimerOutput::Scope scope(r.timer, "fbm: containment");
       r.interface->setup();
+    }
+
+
+
+    template <int dim>
+    std::vector<geometry::Pose>
+    ParticulateFlowSimulation<dim>::poses_marked_over_step(const double k)
+    {
+      // The mesh is carried to where the bodies are marked over the step:
+      // free bodies predicted to the midpoint are marked there, so the
+      // adapted zone sits on the marked body and the covered nodes do not
+      // lead it by half a step's travel.
+      Run                    &r = *run_;
+      std::vector<BodyMotion> current;
+      const bool              predicted
+        = r.predict_interface
+          && parameters.particles.midpoint_interface_position;
+      if (predicted)
+        current = move_free_bodies_to_prediction(k);
+      std::vector<geometry::Pose> poses;
+      for (const auto id : r.ids)
+        poses.emplace_back(r.world->body(id).orientation,
+                           r.world->body(id).position);
+      if (predicted)
+        restore_bodies(current);
+      return poses;
     }
 
 

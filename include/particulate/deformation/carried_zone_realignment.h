@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <functional>
 #include <vector>
 
 namespace particulate {
@@ -37,7 +38,13 @@ namespace particulate {
      *
      * Returns one zone per distinct displacement of the vertices inside
      * the surfaces @p distance on the mesh at @p carried (undeformed
-     * positions @p undeformed). A zone's residual is R - S when every
+     * positions @p undeformed). With @p step (the displacement by which
+     * the fresh mesh is about to be carried, as a function of the place)
+     * S is the lattice translation nearest to R plus the step at the
+     * zone's centre instead, so that the zone ends the step within half a
+     * cell of the lattice: a fresh start carried over a step towards a
+     * wall then presses the cells in between by at most half a cell more
+     * than the step. A zone's residual is R - S when every
      * undeformed vertex within @p zone_width of the surface (counted as
      * carried by R) has a twin shifted by S, so that the fresh zone's
      * vertices lie where the carried ones were; 0 (an ordinary fresh
@@ -47,10 +54,14 @@ namespace particulate {
      */
     template <int dim>
     std::vector<RealignedZone<dim>>
-    realigned_zones(const std::vector<dealii::Point<dim>> &carried,
-                    const std::vector<dealii::Point<dim>> &undeformed,
-                    const DistanceField<dim>              &distance,
-                    const double                           zone_width);
+    realigned_zones(
+      const std::vector<dealii::Point<dim>> &carried,
+      const std::vector<dealii::Point<dim>> &undeformed,
+      const DistanceField<dim>              &distance,
+      const double                           zone_width,
+      const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+        &step
+      = {});
 
     /** The residual of the zone whose centre is nearest to @p x; 0 when
      *  there are none. */

@@ -170,11 +170,16 @@ namespace particulate {
       keeps_quality(const DeformationReport &report) const;
       /** `carry neighbourhood`'s fresh start about the bodies @p at: the
        *  undeformed mesh, each body's zone realigned to where it lies on
-       *  the carried mesh @p carried_positions. */
+       *  the carried mesh @p carried_positions, with the lattice shift
+       *  chosen for the end of the @p step it is about to be carried by
+       *  (realigned_zones()). */
       DeformationReport
       restart_carried_zones(
         const std::vector<dealii::Point<dim>> &carried_positions,
-        const DistanceField<dim>              &at);
+        const DistanceField<dim>              &at,
+        const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+          &step
+        = {});
 
       dealii::Triangulation<dim>            mesh;
       std::unique_ptr<MeshDeformation<dim>> method;

@@ -88,7 +88,9 @@ namespace particulate {
      * stages
      *  1. move_mesh(): prescribed bodies to t_n+1, hinged parts on their
      *     parents with the hinge at t_n+1; the adapted mesh follows
-     *     the bodies, its velocity entering the flow's ALE term;
+     *     the bodies to the poses at which stage 2 marks them (free bodies
+     *     at their predicted midpoint), its velocity entering the flow's
+     *     ALE term;
      *  2. impose_interface(): mark the velocity nodes inside the bodies and
      *     impose u = U + omega x (x - X) there (eq. 5.17);
      *  3. advance_fluid(): fractional-step theta (eq. 5.14);
@@ -150,7 +152,8 @@ namespace particulate {
       set_up();
 
       /** Stage 1 of a step of size @p k: prescribed bodies to t_n+1, and
-       *  the adapted mesh after the bodies. */
+       *  the adapted mesh after the bodies, to the poses at which they are
+       *  marked over the step. */
       void
       move_mesh(const double k);
 
@@ -320,6 +323,11 @@ namespace particulate {
        *  returned. */
       void
       restore_bodies(const std::vector<BodyMotion> &states);
+      /** The bodies' poses where the step of size @p k marks them: free
+       *  bodies at their predicted midpoint when the interface is placed
+       *  there, every other body where it is. */
+      std::vector<geometry::Pose>
+      poses_marked_over_step(const double k);
       /** The imposed velocities are the bodies' current ones. */
       void
       record_imposed();
