@@ -134,29 +134,15 @@ namespace particulate {
       // from the node's own cell, which finds nearly all of them; the rest
       // (nodes that moved into cells of another rank) through
       // RemotePointEvaluation.
-      constexpr unsigned int               max_walk    = 64;
       const auto                          &velocity_fe = fe.base_element(0);
       std::vector<Tensor<1, dim>>          carried_values(points.size());
       std::vector<unsigned int>            remote;
       std::vector<Point<dim>>              remote_points;
       std::vector<types::global_dof_index> old_dofs(fe.n_dofs_per_cell());
-      // The walk starts from the cell where the node before was found
-      // (the nodes come cell by cell, so that is next to it even where a
-      // remeshing moved whole zones by many cells), then from the node's
-      // own cell.
-      std::optional<typename Triangulation<dim>::active_cell_iterator>
-        last_found;
       for (unsigned int i = 0; i < points.size(); ++i)
         {
-          auto found = last_found ? walk_to_point<dim>(mapping,
-                                                       *last_found,
-                                                       points[i],
-                                                       max_walk) :
-                                    std::nullopt;
-          if (!found)
-            found = walk_to_point<dim>(mapping, starts[i], points[i], max_walk);
-          if (found)
-            last_found = found->first;
+          const auto found
+            = walk_to_point<dim>(mapping, starts[i], points[i], 64);
           if (!found)
             {
               remote.push_back(i);
