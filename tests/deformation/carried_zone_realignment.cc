@@ -32,37 +32,17 @@
 #include <vector>
 
 #include "../geometry/check.h"
+#include "disk_in_channel.h"
 
 using namespace dealii;
 using namespace particulate;
 using namespace particulate::deformation;
 
 namespace {
-  const double radius = 0.1, h = 1. / 32.;
-
-  FunctionDistanceField<2>
-  disk_at(const Point<2> &centre)
-  {
-    return FunctionDistanceField<2>(
-      [centre](const Point<2> &x) { return x.distance(centre) - radius; });
-  }
-
-  /** The vertices inside the disk at @p centre, relative to it, sorted. */
-  std::vector<Tensor<1, 2>>
-  inside_relative(const std::vector<Point<2>> &vertices, const Point<2> &centre)
-  {
-    std::vector<Tensor<1, 2>> inside;
-    for (const auto &x : vertices)
-      if (x.distance(centre) < radius)
-        inside.push_back(x - centre);
-    std::sort(inside.begin(),
-              inside.end(),
-              [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
-                return a[1] < b[1] - 1e-12
-                       || (std::abs(a[1] - b[1]) <= 1e-12 && a[0] < b[0]);
-              });
-    return inside;
-  }
+  using sinking_disk::disk_at;
+  using sinking_disk::inside_relative;
+  const double radius = sinking_disk::disk_radius,
+               h      = sinking_disk::channel_cell;
 } // namespace
 
 int
@@ -70,12 +50,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  core::MeshParameters mesh;
-  mesh.type         = core::MeshParameters::Type::hyper_rectangle;
-  mesh.lower_corner = {0., 0.};
-  mesh.upper_corner = {1., 2.};
-  mesh.subdivisions = {4, 8};
-  mesh.refinements  = 3;
+  const core::MeshParameters mesh = sinking_disk::uniform_channel();
 
   DeformationParameters p;
   p.method             = DeformationParameters::Method::none;
