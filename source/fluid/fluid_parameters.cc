@@ -536,10 +536,11 @@ namespace particulate {
         "those of the last geometry stay the preconditioner (FGMRES always "
         "applies the current operator). The velocity multigrid is rebuilt "
         "once a solve needs more than 1.2 times the median FGMRES "
-        "iterations of the last five solves with a fresh one plus 2; the "
-        "Schur approximation's parts when the covered nodes change or "
-        "pressures become decoupled (L_p's structure), or when a solve "
-        "with kept parts does not converge (then all are rebuilt). A fresh "
+        "iterations of the last five solves with a fresh one plus 2, and "
+        "the Schur approximation's parts with it; these also when the "
+        "covered nodes change or pressures become decoupled (L_p's "
+        "structure). A solve with kept parts that does not converge "
+        "rebuilds all and is repeated. A fresh "
         "adaptation, which interpolates the flow onto a new mesh, and a "
         "checkpoint rebuild all.");
       prm.declare_entry("Chebyshev degree",

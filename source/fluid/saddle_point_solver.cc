@@ -248,7 +248,8 @@ namespace particulate {
     template <int dim>
     bool
     SaddlePointSolver<dim>::schur_ingredients_need_building(
-      const FlowDiscretisation<dim> &d) const
+      const FlowDiscretisation<dim> &d,
+      const bool                     velocity_is_fresh) const
     {
       if (schur_state == SchurState::missing)
         return true;
@@ -263,16 +264,23 @@ namespace particulate {
         return true;
       if (schur_state == SchurState::current)
         return false;
-      // Aged: kept through the motions of the mesh, whatever the velocity
-      // V-cycle does. FGMRES needs as many iterations with L_p and M_p's
-      // ILU from the mesh of many steps ago as with fresh ones (the
-      // iterations that grow on a moving mesh are the velocity V-cycle's,
-      // doc/performance.md); a kept solve that fails rebuilds them (solve()).
+      // Aged: kept through the motions of the mesh as long as the velocity
+      // V-cycle is, and built anew with it. The V-cycle is refreshed once
+      // FGMRES needs markedly more iterations than with a fresh
+      // preconditioner (VelocityMultigridInverse::record_solve); with the
+      // Schur ingredients renewed at the same time, that reference count is
+      // one of a preconditioner fresh in both blocks, and an aged L_p wears
+      // the preconditioner out like an aged V-cycle. Kept until L_p's
+      // structure changes, which on a carried mesh is only at a fresh
+      // adaptation, they cost FGMRES 1.8 times the iterations over a
+      // sedimentation (doc/performance.md, "Preconditioners on a moving
+      // mesh"). A kept solve that fails rebuilds them (solve()).
       // Not with the assembled operator: there a kept L_p let Newton
       // diverge on a Laplace-alpha mesh pressed between a disk and a wall
       // (fbm_restart_matches_uninterrupted, '_carried').
-      return parameters.linear_solver.multigrid_on_moving_mesh
-               == MultigridOnMovingMesh::rebuild
+      return velocity_is_fresh
+             || parameters.linear_solver.multigrid_on_moving_mesh
+                  == MultigridOnMovingMesh::rebuild
              || parameters.linear_solver.velocity_operator
                   == VelocityOperator::assembled;
     }
@@ -301,7 +309,7 @@ namespace particulate {
       const VelocityLinearisation linearisation
         = velocity_linearisation(discretisation, stage);
       bool fresh = velocity_inverse->prepare(linearisation);
-      if (schur_ingredients_need_building(discretisation))
+      if (schur_ingredients_need_building(discretisation, fresh))
         build_schur_ingredients(discretisation);
       const unsigned int max_iterations
         = parameters.linear_solver.maximum_iterations;

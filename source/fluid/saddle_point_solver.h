@@ -119,8 +119,8 @@ namespace particulate {
        * Where L_p, its AMG and M_p's ILU stand: missing (rebuilt before
        * the next solve), current (built on this mesh), or aged (built on
        * the mesh before one or more ALE motions, which only changed
-       * values: kept like the velocity V-cycle, 'Multigrid on a moving
-       * mesh'). Other covered nodes or decoupled pressures rebuild them
+       * values: kept as long as the velocity V-cycle is, 'Multigrid on a
+       * moving mesh'). Other covered nodes or decoupled pressures rebuild them
        * in any state.
        */
       enum class SchurState
@@ -134,10 +134,12 @@ namespace particulate {
       void
       build_schur_ingredients(FlowDiscretisation<dim> &discretisation);
 
-      /** Whether the Schur ingredients are built anew before a solve.
-       *  Collective. */
+      /** Whether the Schur ingredients are built anew before a solve
+       *  whose velocity block inverse is (@p velocity_is_fresh) or is not
+       *  built for the current matrix and mesh. Collective. */
       bool
-      schur_ingredients_need_building(const FlowDiscretisation<dim> &d) const;
+      schur_ingredients_need_building(const FlowDiscretisation<dim> &d,
+                                      const bool velocity_is_fresh) const;
 
       /** How one FGMRES solve ended. */
       struct FgmresOutcome
