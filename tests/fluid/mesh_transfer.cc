@@ -3,8 +3,10 @@
 // at most 2 in x and y is biquadratic in the reference coordinates of any
 // bilinear cell, so Q2 holds it exactly on the old and on the moved mesh,
 // and it must arrive at every node of the moved mesh with its exact value
-// there (to round-off) - on 2 ranks, where many new nodes lie in cells of
-// the other rank. The mesh velocity of the next step is zero.
+// there (to round-off) - on 2 and on 3 ranks, where many new nodes lie in
+// cells of another rank (found by handing the walk to the owner of the
+// ghost cell it reached, or by the global search). The mesh velocity of the
+// next step is zero.
 
 #include <particulate/fluid/navier_stokes.h>
 
